@@ -1,0 +1,288 @@
+//! The program lexer (PRJ.LEX, PRJ.WORD): bytes in, blocks of words out, no allocation.
+//!
+//! A program is words — an address letter (either case) and a number — grouped into blocks.
+//! Spaces and tabs may stand anywhere between tokens, `(comments)` close on their line, `;` or a
+//! newline ends a block, `%` is skipped, `O` and `N` numbers are ordinary words the engines
+//! ignore. Anything else is an alarm naming the byte and its line. The lexer stops at the first
+//! alarm.
+
+use crate::alarm::{Alarm, AlarmCode};
+use crate::rule::Rule;
+use crate::units::Number;
+
+/// At most this many G words in one block.
+pub const MAX_G_WORDS: usize = 4;
+/// At most this many digits in one number (so every number fits an `u64` exactly).
+pub const MAX_DIGITS: u32 = 18;
+
+/// One block: at most one word per address letter, except G (up to [`MAX_G_WORDS`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Block {
+    /// 1-based line of the block's first word.
+    pub line: u32,
+    words: [Option<Number>; 26],
+    g: [Number; MAX_G_WORDS],
+    g_count: u8,
+}
+
+impl Block {
+    fn new(line: u32) -> Block {
+        let zero = Number { negative: false, mantissa: 0, decimals: 0, point: false };
+        Block { line, words: [None; 26], g: [zero; MAX_G_WORDS], g_count: 0 }
+    }
+
+    /// The word at `letter` (upper case, not G).
+    pub fn get(&self, letter: u8) -> Option<Number> {
+        debug_assert!(letter.is_ascii_uppercase() && letter != b'G');
+        self.words.get(letter.wrapping_sub(b'A') as usize).copied().flatten()
+    }
+
+    /// Whether the block has a word at `letter` (upper case, not G).
+    pub fn has(&self, letter: u8) -> bool {
+        self.get(letter).is_some()
+    }
+
+    /// The G words, in the order written.
+    pub fn g_codes(&self) -> &[Number] {
+        &self.g[..self.g_count as usize]
+    }
+
+    /// The letters (not G) present, in alphabetical order — the order in which engines check
+    /// words (docs/INTERPRETATION.md, check order).
+    pub fn letters(&self) -> impl Iterator<Item = u8> + '_ {
+        (b'A'..=b'Z').filter(move |&l| l != b'G' && self.has(l))
+    }
+
+    fn is_empty(&self) -> bool {
+        self.g_count == 0 && self.words.iter().all(Option::is_none)
+    }
+
+    fn push(&mut self, letter: u8, value: Number, line: u32) -> Result<(), Alarm> {
+        if letter == b'G' {
+            if self.g_count as usize == MAX_G_WORDS {
+                return Err(Alarm::new(AlarmCode::DuplicateWord, Some(b'G'), Rule::PrjWord, line));
+            }
+            self.g[self.g_count as usize] = value;
+            self.g_count += 1;
+            return Ok(());
+        }
+        let slot = &mut self.words[(letter - b'A') as usize];
+        if slot.is_some() {
+            return Err(Alarm::new(AlarmCode::DuplicateWord, Some(letter), Rule::PrjWord, line));
+        }
+        *slot = Some(value);
+        Ok(())
+    }
+}
+
+/// Iterator over the blocks of a program; yields one `Err` at the first alarm, then ends.
+#[derive(Clone, Debug)]
+pub struct Blocks<'a> {
+    src: &'a [u8],
+    pos: usize,
+    line: u32,
+    done: bool,
+}
+
+impl<'a> Blocks<'a> {
+    pub fn new(src: &'a [u8]) -> Blocks<'a> {
+        Blocks { src, pos: 0, line: 1, done: false }
+    }
+
+    fn peek(&self) -> Option<u8> {
+        self.src.get(self.pos).copied()
+    }
+
+    fn alarm(&self, code: AlarmCode, word: Option<u8>) -> Alarm {
+        Alarm::new(code, word, Rule::PrjLex, self.line)
+    }
+
+    fn skip_blanks(&mut self) {
+        while let Some(b' ' | b'\t' | b'\r' | b'%') = self.peek() {
+            self.pos += 1;
+        }
+    }
+
+    /// Reads the number after an address letter: `[+-]digits[.digits]` or `[+-].digits`.
+    fn number(&mut self, letter: u8) -> Result<Number, Alarm> {
+        self.skip_blanks();
+        let mut n = Number { negative: false, mantissa: 0, decimals: 0, point: false };
+        if let Some(sign @ (b'+' | b'-')) = self.peek() {
+            n.negative = sign == b'-';
+            self.pos += 1;
+        }
+        let mut digits = 0u32;
+        let mut significant = 0u32;
+        while let Some(b) = self.peek() {
+            match b {
+                b'0'..=b'9' => {
+                    digits += 1;
+                    if significant > 0 || b != b'0' {
+                        significant += 1;
+                    }
+                    if significant > MAX_DIGITS || (n.point && n.decimals as u32 >= MAX_DIGITS) {
+                        return Err(self.alarm(AlarmCode::BadNumber, Some(letter)));
+                    }
+                    n.mantissa = n.mantissa * 10 + u64::from(b - b'0');
+                    if n.point {
+                        n.decimals += 1;
+                    }
+                }
+                b'.' if !n.point => n.point = true,
+                _ => break,
+            }
+            self.pos += 1;
+        }
+        if digits == 0 {
+            return Err(self.alarm(AlarmCode::BadNumber, Some(letter)));
+        }
+        if n.mantissa == 0 {
+            n.negative = false;
+        }
+        Ok(n)
+    }
+
+    fn comment(&mut self) -> Result<(), Alarm> {
+        let open_line = self.line;
+        while let Some(b) = self.peek() {
+            self.pos += 1;
+            match b {
+                b')' => return Ok(()),
+                b'\n' => break,
+                _ => {}
+            }
+        }
+        Err(Alarm::new(AlarmCode::UnclosedComment, Some(b'('), Rule::PrjLex, open_line))
+    }
+
+    fn block(&mut self) -> Result<Option<Block>, Alarm> {
+        let mut block: Option<Block> = None;
+        loop {
+            self.skip_blanks();
+            let Some(b) = self.peek() else {
+                return Ok(block);
+            };
+            match b {
+                b'\n' | b';' => {
+                    self.pos += 1;
+                    let ended_line = self.line;
+                    if b == b'\n' {
+                        self.line += 1;
+                    }
+                    if let Some(blk) = block {
+                        debug_assert!(blk.line <= ended_line);
+                        return Ok(Some(blk));
+                    }
+                }
+                b'(' => {
+                    self.pos += 1;
+                    self.comment()?;
+                }
+                b if b.is_ascii_alphabetic() => {
+                    let letter = b.to_ascii_uppercase();
+                    let line = self.line;
+                    self.pos += 1;
+                    let value = self.number(letter)?;
+                    block.get_or_insert_with(|| Block::new(line)).push(letter, value, line)?;
+                }
+                other => return Err(self.alarm(AlarmCode::BadCharacter, Some(other))),
+            }
+        }
+    }
+}
+
+impl Iterator for Blocks<'_> {
+    type Item = Result<Block, Alarm>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        if self.done {
+            return None;
+        }
+        match self.block() {
+            Ok(Some(b)) if !b.is_empty() => Some(Ok(b)),
+            Ok(_) => {
+                self.done = true;
+                None
+            }
+            Err(a) => {
+                self.done = true;
+                Some(Err(a))
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn blocks(src: &str) -> Vec<Result<Block, Alarm>> {
+        Blocks::new(src.as_bytes()).collect()
+    }
+
+    #[test]
+    fn reads_the_g92_example() {
+        let src = "%\nO0012;\nM3 S300 G0 X150 Z50 T0101; (thread tool)\nG0X65Z5\ng92 x58.7 z-28 f3 j3 k1;\nX57.7;\nM30;\n%\n";
+        let b: Vec<Block> = blocks(src).into_iter().map(Result::unwrap).collect();
+        assert_eq!(b.len(), 6);
+        assert_eq!(b[0].get(b'O').unwrap().mantissa, 12);
+        assert_eq!(b[1].line, 3);
+        assert_eq!(b[1].g_codes().len(), 1);
+        let g92 = &b[3];
+        assert_eq!(g92.line, 5);
+        assert_eq!(g92.g_codes()[0].mantissa, 92);
+        let z = g92.get(b'Z').unwrap();
+        assert!(z.negative && z.mantissa == 28 && !z.point);
+        let x = g92.get(b'X').unwrap();
+        assert_eq!((x.mantissa, x.decimals, x.point), (587, 1, true));
+        assert_eq!(g92.letters().collect::<Vec<_>>(), b"FJKXZ".to_vec());
+    }
+
+    #[test]
+    fn alarms_name_byte_and_line() {
+        let r = blocks("G0 X1\nG0 X2 #\n");
+        assert!(r[0].is_ok());
+        assert_eq!(r[1], Err(Alarm::new(AlarmCode::BadCharacter, Some(b'#'), Rule::PrjLex, 2)));
+        assert_eq!(r.len(), 2);
+        assert_eq!(
+            blocks("X1 X2")[0],
+            Err(Alarm::new(AlarmCode::DuplicateWord, Some(b'X'), Rule::PrjWord, 1))
+        );
+        assert_eq!(blocks("G0 X")[0], Err(Alarm::new(AlarmCode::BadNumber, Some(b'X'), Rule::PrjLex, 1)));
+        assert_eq!(blocks("X-.")[0], Err(Alarm::new(AlarmCode::BadNumber, Some(b'X'), Rule::PrjLex, 1)));
+        assert_eq!(
+            blocks("\n(open\nX1")[0],
+            Err(Alarm::new(AlarmCode::UnclosedComment, Some(b'('), Rule::PrjLex, 2))
+        );
+        assert_eq!(
+            blocks("X1234567890123456789")[0],
+            Err(Alarm::new(AlarmCode::BadNumber, Some(b'X'), Rule::PrjLex, 1))
+        );
+    }
+
+    #[test]
+    fn numbers_forms() {
+        let b = blocks("X.5 Z-0 U+3. W000123.4500")[0].unwrap();
+        assert_eq!(b.get(b'X').unwrap(), Number { negative: false, mantissa: 5, decimals: 1, point: true });
+        assert_eq!(b.get(b'Z').unwrap(), Number { negative: false, mantissa: 0, decimals: 0, point: false });
+        assert_eq!(b.get(b'U').unwrap(), Number { negative: false, mantissa: 3, decimals: 0, point: true });
+        assert_eq!(b.get(b'W').unwrap(), Number { negative: false, mantissa: 1234500, decimals: 4, point: true });
+    }
+
+    #[test]
+    fn random_bytes_never_panic() {
+        let mut state = 0x1234_5678_9abc_def0u64;
+        for _ in 0..2000 {
+            let mut buf = [0u8; 64];
+            for b in buf.iter_mut() {
+                state ^= state << 13;
+                state ^= state >> 7;
+                state ^= state << 17;
+                *b = (state >> 24) as u8;
+            }
+            for r in Blocks::new(&buf) {
+                let _ = r;
+            }
+        }
+    }
+}

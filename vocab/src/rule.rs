@@ -1,0 +1,149 @@
+//! Rule IDs: the project's rule catalogue (`docs/RULES.md`) as code.
+//!
+//! Every move of a trace and every alarm names the rule it realises, so a diff or an evidence
+//! report can point a reviewer at the catalogue entry.
+
+macro_rules! rules {
+    ($($variant:ident => $id:literal),* $(,)?) => {
+        /// One rule of the catalogue.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+        pub enum Rule { $($variant),* }
+
+        impl Rule {
+            /// Every rule, in catalogue order.
+            pub const ALL: &'static [Rule] = &[$(Rule::$variant),*];
+
+            /// The catalogue ID, e.g. `"G76.DEPTH.MIN"`.
+            pub const fn id(self) -> &'static str {
+                match self { $(Rule::$variant => $id),* }
+            }
+
+            /// The rule with this catalogue ID.
+            pub fn from_id(id: &str) -> Option<Rule> {
+                match id { $($id => Some(Rule::$variant),)* _ => None }
+            }
+        }
+    };
+}
+
+rules! {
+    ComAxes => "COM.AXES",
+    ComUnits => "COM.UNITS",
+    ComRanges => "COM.RANGES",
+    ComAbsInc => "COM.ABSINC",
+    ComLead => "COM.LEAD",
+    ComLongAxis => "COM.LONGAXIS",
+    ComPoints => "COM.POINTS",
+    ComSide => "COM.SIDE",
+    ComMultiStart => "COM.MULTISTART",
+    PrjLex => "PRJ.LEX",
+    PrjWord => "PRJ.WORD",
+    PrjDialect => "PRJ.DIALECT",
+    PrjModal => "PRJ.MODAL",
+    PrjSupported => "PRJ.SUPPORTED",
+    PrjNoop => "PRJ.NOOP",
+    PrjMaxPass => "PRJ.MAXPASS",
+    PrjTrace => "PRJ.TRACE",
+    G92Format => "G92.FORMAT",
+    G92Modal => "G92.MODAL",
+    G92Path => "G92.PATH",
+    G92Taper => "G92.TAPER",
+    G92Pullout => "G92.PULLOUT",
+    G92Jk1 => "G92.JK.1",
+    G92Jk2 => "G92.JK.2",
+    G92Jk3 => "G92.JK.3",
+    G92Jk4 => "G92.JK.4",
+    G92Jk5 => "G92.JK.5",
+    G92Jk6 => "G92.JK.6",
+    G92Jk7 => "G92.JK.7",
+    G92Jk8 => "G92.JK.8",
+    G92Hold => "G92.HOLD",
+    G92Single => "G92.SINGLE",
+    G92Example => "G92.EXAMPLE",
+    G76Format => "G76.FORMAT",
+    G76Defaults => "G76.DEFAULTS",
+    G76Required => "G76.REQUIRED",
+    G76Depth1 => "G76.DEPTH.1",
+    G76DepthMin => "G76.DEPTH.MIN",
+    G76DepthLast => "G76.DEPTH.LAST",
+    G76Finish => "G76.FINISH",
+    G76FinishZ => "G76.FINISH.Z",
+    G76InfeedX => "G76.INFEED.X",
+    G76InfeedZ => "G76.INFEED.Z",
+    G76Mode => "G76.MODE",
+    G76LeadIn => "G76.LEADIN",
+    G76Pullout => "G76.PULLOUT",
+    G76Path => "G76.PATH",
+    G76MultiStart => "G76.MULTISTART",
+    G76Example => "G76.EXAMPLE",
+    G78Format => "G78.FORMAT",
+    G78Mode => "G78.MODE",
+    G78DepthMode => "G78.DEPTHMODE",
+    G78Pullout => "G78.PULLOUT",
+    G78Example => "G78.EXAMPLE",
+    F76Format => "F76.FORMAT",
+    F76Microns => "F76.MICRONS",
+    F76Ex1 => "F76.EX1",
+    F76Ex2 => "F76.EX2",
+    G32 => "G32",
+    G33 => "G33",
+    G34 => "G34",
+    G90G94 => "G90G94",
+    G70G75 => "G70G75",
+    G162 => "G162",
+}
+
+impl core::fmt::Display for Rule {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(self.id())
+    }
+}
+
+#[cfg(feature = "std")]
+impl serde::Serialize for Rule {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.id())
+    }
+}
+
+#[cfg(feature = "std")]
+impl<'de> serde::Deserialize<'de> for Rule {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let id = <std::borrow::Cow<'de, str>>::deserialize(d)?;
+        Rule::from_id(&id).ok_or_else(|| serde::de::Error::custom(format!("unknown rule ID {id}")))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ids_round_trip_and_are_unique() {
+        let mut seen = std::collections::HashSet::new();
+        for &r in Rule::ALL {
+            assert!(seen.insert(r.id()), "duplicate rule ID {}", r.id());
+            assert_eq!(Rule::from_id(r.id()), Some(r));
+        }
+    }
+
+    /// The code list and the catalogue in docs/RULES.md name the same rules.
+    #[test]
+    fn catalogue_matches_code() {
+        let doc = include_str!("../../docs/RULES.md");
+        let mut in_doc = std::collections::BTreeSet::new();
+        for line in doc.lines() {
+            if let Some(rest) = line.strip_prefix("| ") {
+                let id = rest.split(' ').next().unwrap_or("");
+                if id.chars().next().is_some_and(|c| c.is_ascii_uppercase()) && id != "ID" {
+                    in_doc.insert(id.to_string());
+                }
+            }
+        }
+        let in_code: std::collections::BTreeSet<String> =
+            Rule::ALL.iter().map(|r| r.id().to_string()).collect();
+        let sources = ["M000", "M001", "M002", "M003", "M004", "PRJ"];
+        in_doc.retain(|id| !sources.contains(&id.as_str()));
+        assert_eq!(in_doc, in_code, "docs/RULES.md and Rule::ALL differ");
+    }
+}

@@ -1,0 +1,183 @@
+//! The trace as an owned value, and its two printed forms: JSON and canonical expanded G-code.
+//!
+//! Canonical G-code (documented in the README, parsed by vendors):
+//!
+//! ```text
+//! (CYCLECHECK TRACE MM GRID 0.001)
+//! G00 X65.000 Z5.000
+//! (PASS 1 ROUGH DEPTH 3.150)
+//! G00 X58.700 Z5.000
+//! G32 X58.700 Z-27.000 F3.0000
+//! (ALARM 2001 LINE 3 WORD P RULE G76.REQUIRED)
+//! ```
+//!
+//! One motion per line with both axes, X as a diameter, lengths with the grid's decimals, F with
+//! the lead grid's decimals. `G32` lines add `Q` (start angle, 0.001°) and `K` (lead change per
+//! revolution) only when non-zero. A pass header prints the radius depth.
+
+use crate::alarm::Alarm;
+use crate::trace::{Event, Move, MoveKind};
+use crate::units::Grid;
+use serde::{Deserialize, Serialize};
+use std::fmt::Write as _;
+
+/// A whole expansion: its events and the alarm that ended it, if any.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Trace {
+    pub grid: Grid,
+    pub events: Vec<Event>,
+    pub alarm: Option<Alarm>,
+}
+
+/// Formats `count` units of `10^-decimals` as a decimal: `fixed(-28000, 3)` = `-28.000`.
+pub fn fixed(count: i64, decimals: u32) -> String {
+    let scale = 10u64.pow(decimals);
+    let sign = if count < 0 { "-" } else { "" };
+    let mag = count.unsigned_abs();
+    if decimals == 0 {
+        return format!("{sign}{mag}");
+    }
+    format!("{sign}{}.{:0width$}", mag / scale, mag % scale, width = decimals as usize)
+}
+
+impl Trace {
+    /// Collects a streaming expansion (an iterator that ends after its first alarm).
+    pub fn collect(grid: Grid, stream: impl IntoIterator<Item = Result<Event, Alarm>>) -> Trace {
+        let mut events = Vec::new();
+        for item in stream {
+            match item {
+                Ok(e) => events.push(e),
+                Err(a) => return Trace { grid, events, alarm: Some(a) },
+            }
+        }
+        Trace { grid, events, alarm: None }
+    }
+
+    /// The moves only.
+    pub fn moves(&self) -> impl Iterator<Item = &Move> {
+        self.events.iter().filter_map(|e| match e {
+            Event::Move(m) => Some(m),
+            Event::Pass(_) => None,
+        })
+    }
+
+    /// One line of canonical G-code for an event.
+    pub fn event_line(grid: Grid, event: &Event) -> String {
+        let d = grid.decimals();
+        match event {
+            Event::Pass(p) => {
+                let depth = if p.diameter_depth % 2 == 0 {
+                    fixed(p.diameter_depth / 2, d)
+                } else {
+                    fixed(p.diameter_depth * 5, d + 1)
+                };
+                format!("(PASS {} {} DEPTH {})", p.index, p.kind.name(), depth)
+            }
+            Event::Move(m) => {
+                let (x, z) = (fixed(m.x, d), fixed(m.z, d));
+                let f = fixed(m.feed, grid.lead_decimals());
+                match m.kind {
+                    MoveKind::Rapid => format!("G00 X{x} Z{z}"),
+                    MoveKind::Feed => format!("G01 X{x} Z{z} F{f}"),
+                    MoveKind::Thread => {
+                        let mut line = format!("G32 X{x} Z{z} F{f}");
+                        if m.angle != 0 {
+                            let _ = write!(line, " Q{}", m.angle);
+                        }
+                        if m.lead_change != 0 {
+                            let _ = write!(line, " K{}", fixed(m.lead_change, grid.lead_decimals()));
+                        }
+                        line
+                    }
+                }
+            }
+        }
+    }
+
+    /// The alarm as a G-code comment line.
+    pub fn alarm_line(alarm: &Alarm) -> String {
+        let word = match alarm.word {
+            Some(b) if b.is_ascii_graphic() && b != b'(' && b != b')' => format!(" WORD {}", b as char),
+            Some(b) => format!(" WORD 0x{b:02X}"),
+            None => String::new(),
+        };
+        format!("(ALARM {} LINE {}{} RULE {})", alarm.code.number(), alarm.line, word, alarm.rule)
+    }
+
+    /// Canonical expanded G-code, one line per event, a header first and the alarm last.
+    pub fn to_gcode(&self) -> String {
+        let mut out = format!(
+            "(CYCLECHECK TRACE {} GRID {})\n",
+            self.grid.unit_name(),
+            fixed(1, self.grid.decimals())
+        );
+        for e in &self.events {
+            out.push_str(&Trace::event_line(self.grid, e));
+            out.push('\n');
+        }
+        if let Some(a) = &self.alarm {
+            out.push_str(&Trace::alarm_line(a));
+            out.push('\n');
+        }
+        out
+    }
+
+    /// The trace as pretty JSON.
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).expect("a trace always serializes")
+    }
+
+    /// Reads a trace from its JSON form.
+    pub fn from_json(text: &str) -> Result<Trace, serde_json::Error> {
+        serde_json::from_str(text)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::trace::{Pass, PassKind};
+    use crate::{AlarmCode, Rule};
+
+    fn sample() -> Trace {
+        Trace {
+            grid: Grid::METRIC_ISB,
+            events: vec![
+                Event::Move(Move::rapid(65_000, 5_000, Rule::PrjModal)),
+                Event::Pass(Pass { index: 1, kind: PassKind::Rough, diameter_depth: 6_300, rule: Rule::G92Path }),
+                Event::Move(Move::thread(58_700, -27_000, 30_000, 0, Rule::G92Path)),
+                Event::Move(Move { angle: 180_000, lead_change: -5, ..Move::thread(1, -2, 3, 0, Rule::G34) }),
+                Event::Pass(Pass { index: 2, kind: PassKind::Finish, diameter_depth: 1, rule: Rule::G92Path }),
+                Event::Move(Move::feed(-1_500, 0, 2_000, Rule::PrjModal)),
+            ],
+            alarm: Some(Alarm::new(AlarmCode::MissingWord, Some(b'P'), Rule::G76Required, 3)),
+        }
+    }
+
+    #[test]
+    fn gcode_form() {
+        let text = sample().to_gcode();
+        let expect = "(CYCLECHECK TRACE MM GRID 0.001)\n\
+            G00 X65.000 Z5.000\n\
+            (PASS 1 ROUGH DEPTH 3.150)\n\
+            G32 X58.700 Z-27.000 F3.0000\n\
+            G32 X0.001 Z-0.002 F0.0003 Q180000 K-0.0005\n\
+            (PASS 2 FINISH DEPTH 0.0005)\n\
+            G01 X-1.500 Z0.000 F0.2000\n\
+            (ALARM 2001 LINE 3 WORD P RULE G76.REQUIRED)\n";
+        assert_eq!(text, expect);
+    }
+
+    #[test]
+    fn json_round_trip() {
+        let t = sample();
+        assert_eq!(Trace::from_json(&t.to_json()).unwrap(), t);
+    }
+
+    #[test]
+    fn fixed_formats() {
+        assert_eq!(fixed(0, 3), "0.000");
+        assert_eq!(fixed(-5, 3), "-0.005");
+        assert_eq!(fixed(i64::MIN, 3), "-9223372036854775.808");
+    }
+}

@@ -1,0 +1,106 @@
+//! The trace (PRJ.TRACE): what an expander emits, one event at a time.
+//!
+//! Coordinates are absolute end points in increments: X as a diameter, Z. Thread moves carry the
+//! lead (lead grid, COM.LEAD), the spindle start angle in 0.001° (COM.MULTISTART) and the lead
+//! change per revolution (0 for a constant lead). Pass headers carry the pass index, its kind and
+//! its depth on diameter (twice the radius depth), so depths derived from diameters stay exact.
+
+use crate::rule::Rule;
+
+/// The kind of a move.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "std", serde(rename_all = "snake_case"))]
+pub enum MoveKind {
+    /// Positioning at rapid rate (`G00`).
+    Rapid,
+    /// Linear feed (`G01`); `feed` is the modal feed on the lead grid.
+    Feed,
+    /// Spindle-synchronized thread move (`G32`), thread cuts and pull-outs alike.
+    Thread,
+}
+
+/// One motion to an absolute end point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
+pub struct Move {
+    pub kind: MoveKind,
+    /// End X, diameter, increments.
+    pub x: i64,
+    /// End Z, increments.
+    pub z: i64,
+    /// Feed (Feed) or lead (Thread) in lead counts; 0 for Rapid.
+    pub feed: i64,
+    /// Spindle start angle of a thread move, 0.001°; 0 otherwise.
+    pub angle: u32,
+    /// Lead change per revolution of a thread move, lead counts; 0 for a constant lead.
+    pub lead_change: i64,
+    /// The rule this move realises.
+    pub rule: Rule,
+}
+
+impl Move {
+    pub const fn rapid(x: i64, z: i64, rule: Rule) -> Move {
+        Move { kind: MoveKind::Rapid, x, z, feed: 0, angle: 0, lead_change: 0, rule }
+    }
+
+    pub const fn feed(x: i64, z: i64, feed: i64, rule: Rule) -> Move {
+        Move { kind: MoveKind::Feed, x, z, feed, angle: 0, lead_change: 0, rule }
+    }
+
+    pub const fn thread(x: i64, z: i64, lead: i64, angle: u32, rule: Rule) -> Move {
+        Move { kind: MoveKind::Thread, x, z, feed: lead, angle, lead_change: 0, rule }
+    }
+}
+
+/// The kind of a pass (G76.FINISH).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "std", serde(rename_all = "SCREAMING_SNAKE_CASE"))]
+pub enum PassKind {
+    Rough,
+    Finish,
+    Spring,
+}
+
+impl PassKind {
+    pub const fn name(self) -> &'static str {
+        match self {
+            PassKind::Rough => "ROUGH",
+            PassKind::Finish => "FINISH",
+            PassKind::Spring => "SPRING",
+        }
+    }
+}
+
+/// The header before the moves of one pass.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
+pub struct Pass {
+    /// 1-based pass number within its cycle (G92: within its modal run).
+    pub index: u32,
+    pub kind: PassKind,
+    /// Depth on diameter, increments: twice the radius depth of the pass.
+    pub diameter_depth: i64,
+    /// The rule that set this depth.
+    pub rule: Rule,
+}
+
+/// One trace event.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "std", serde(tag = "event", rename_all = "snake_case"))]
+pub enum Event {
+    Pass(Pass),
+    Move(Move),
+}
+
+impl Event {
+    /// The rule behind the event.
+    pub const fn rule(&self) -> Rule {
+        match self {
+            Event::Pass(p) => p.rule,
+            Event::Move(m) => m.rule,
+        }
+    }
+}
