@@ -1,9 +1,55 @@
-//! Executable reference spec of the lathe thread-cycle rules (in progress).
-use cycle_vocab::text::Trace;
-use cycle_vocab::Config;
+//! Executable reference spec of the lathe thread canned cycles G92 (M002), G76 (M001, M003
+//! FANUC-style) and G78 (M000).
+//!
+//! A certification reference: clarity first, exact integer arithmetic, each rule a small
+//! function whose doc comment names its rule ID (`docs/RULES.md`) and source manual key. Every
+//! choice the manuals leave open is the one recorded in `docs/INTERPRETATION.md`.
+//!
+//! | module | rules |
+//! |---|---|
+//! | [`program`] | PRJ.MODAL, PRJ.WORD, PRJ.SUPPORTED, PRJ.DIALECT, COM.ABSINC, check order |
+//! | [`words`] | COM.UNITS, COM.RANGES, COM.LEAD, F76.MICRONS |
+//! | [`exact`], [`tangent`] | the rounding rule: half up, once, on exact values |
+//! | [`g92`] | G92.* |
+//! | [`pullout`] | G92.PULLOUT, G76.PULLOUT, G78.PULLOUT geometry, COM.LONGAXIS |
+//! | [`multipass`] | G76.*, G78.*, F76.*, PRJ.MAXPASS |
+//! | [`emit`] | PRJ.TRACE, PRJ.NOOP, COM.MULTISTART |
+#![forbid(unsafe_code)]
 
-/// Expands a whole program into its trace.
+pub mod emit;
+pub mod exact;
+pub mod g92;
+pub mod multipass;
+pub mod program;
+pub mod pullout;
+pub mod tangent;
+pub mod words;
+
+use cycle_vocab::text::Trace;
+use cycle_vocab::{Blocks, Config};
+
+/// Expands a whole program into its trace. Stops at the first alarm, keeping the events emitted
+/// before it. Never panics; resource use is bounded by the program length and `max_passes`
+/// (PRJ.MAXPASS, checked before any motion of a cycle).
 pub fn expand(program: &[u8], config: &Config) -> Trace {
-    let _ = program;
-    Trace { grid: config.grid, events: Vec::new(), alarm: None }
+    let mut machine = program::Machine::new(config);
+    let mut alarm = None;
+    for block in Blocks::new(program) {
+        let result = match block {
+            Ok(b) => machine.block(&b),
+            Err(a) => Err(a),
+        };
+        match result {
+            Ok(false) => {}
+            Ok(true) => break, // M02 / M30: nothing after this block is read
+            Err(a) => {
+                alarm = Some(a);
+                break;
+            }
+        }
+    }
+    Trace { grid: config.grid, events: machine.out.events, alarm }
 }
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,89 @@
+//! The trace being built (PRJ.TRACE) and the machine position it implies (PRJ.MODAL).
+
+use cycle_vocab::{Alarm, AlarmCode, Event, Move, MoveKind, Pass, PassKind, Rule};
+
+/// Events emitted so far and the current position (X diameter, Z, increments).
+#[derive(Debug)]
+pub struct Out {
+    pub events: Vec<Event>,
+    pub x: i64,
+    pub z: i64,
+}
+
+/// A coordinate that leaves the i64 range of the trace (possible only for extreme configured
+/// start points): `OUT OF RANGE` on the axis (COM.RANGES).
+fn coordinate(v: i128, word: u8, line: u32) -> Result<i64, Alarm> {
+    i64::try_from(v).map_err(|_| Alarm::new(AlarmCode::OutOfRange, Some(word), Rule::ComRanges, line))
+}
+
+impl Out {
+    pub fn new(x: i64, z: i64) -> Out {
+        Out { events: Vec::new(), x, z }
+    }
+
+    /// PRJ.TRACE: a pass header; `diameter_depth` is twice the radius depth.
+    pub fn pass(&mut self, index: u32, kind: PassKind, diameter_depth: i128, rule: Rule, line: u32) -> Result<(), Alarm> {
+        let diameter_depth = coordinate(diameter_depth, b'X', line)?;
+        self.events.push(Event::Pass(Pass { index, kind, diameter_depth, rule }));
+        Ok(())
+    }
+
+    /// PRJ.NOOP: a move to the current position is not emitted. Otherwise the move is appended
+    /// and becomes the current position.
+    #[allow(clippy::too_many_arguments)]
+    fn go(&mut self, kind: MoveKind, x: i128, z: i128, feed: i64, angle: u32, rule: Rule, line: u32) -> Result<(), Alarm> {
+        let x = coordinate(x, b'X', line)?;
+        let z = coordinate(z, b'Z', line)?;
+        if x == self.x && z == self.z {
+            return Ok(());
+        }
+        self.events.push(Event::Move(Move { kind, x, z, feed, angle, lead_change: 0, rule }));
+        self.x = x;
+        self.z = z;
+        Ok(())
+    }
+
+    /// A rapid (`G00`) to (x, z).
+    pub fn rapid(&mut self, x: i128, z: i128, rule: Rule, line: u32) -> Result<(), Alarm> {
+        self.go(MoveKind::Rapid, x, z, 0, 0, rule, line)
+    }
+
+    /// A linear feed (`G01`) to (x, z) at `feed` lead counts.
+    pub fn feed(&mut self, x: i128, z: i128, feed: i64, rule: Rule, line: u32) -> Result<(), Alarm> {
+        self.go(MoveKind::Feed, x, z, feed, 0, rule, line)
+    }
+
+    /// A spindle-synchronized move (`G32`) with `lead` and start `angle` (0.001°).
+    pub fn thread(&mut self, x: i128, z: i128, lead: i64, angle: u32, rule: Rule, line: u32) -> Result<(), Alarm> {
+        self.go(MoveKind::Thread, x, z, lead, angle, rule, line)
+    }
+}
+
+/// COM.MULTISTART (M001, M002): the spindle start angle of start j of L, round(360 000·j / L)
+/// in 0.001°, half up.
+pub fn start_angle(j: u32, l: u32) -> u32 {
+    let v = crate::exact::round_div(360_000 * j as i128, l.max(1) as i128);
+    u32::try_from(v).unwrap_or(0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn angles() {
+        assert_eq!(start_angle(0, 3), 0);
+        assert_eq!(start_angle(1, 3), 120_000);
+        assert_eq!(start_angle(1, 7), 51_429); // 51428.57
+        assert_eq!(start_angle(1, 2), 180_000);
+    }
+
+    #[test]
+    fn noop_moves_are_dropped() {
+        let mut o = Out::new(10, 20);
+        o.rapid(10, 20, Rule::PrjModal, 1).unwrap();
+        assert!(o.events.is_empty());
+        o.rapid(11, 20, Rule::PrjModal, 1).unwrap();
+        assert_eq!(o.events.len(), 1);
+    }
+}

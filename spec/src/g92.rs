@@ -1,0 +1,185 @@
+//! G92 — single thread cycle (M002, GSK980TDi 3.24.9).
+//!
+//! One cycle from the start point A: ① rapid X to the thread start C, ② thread C → D (with the
+//! pull-out), ③ rapid X back to A.x, ④ rapid Z back to A.z (G92.PATH). The modal run
+//! (G92.MODAL) is handled by [`crate::program`]; this module expands one cycle.
+
+use crate::emit::{start_angle, Out};
+use crate::exact::round_div;
+use crate::pullout::{self, Amounts, ThreadLine};
+use crate::words::alarm;
+use cycle_vocab::{Alarm, AlarmCode, Grid, Params, PassKind, Rule};
+
+/// One G92 cycle, all words resolved (absolute end point, modal values filled in).
+#[derive(Clone, Copy, Debug)]
+pub struct G92Cycle {
+    /// Start point A = the current position (X diameter, Z).
+    pub a: (i128, i128),
+    /// Thread end D (X diameter, Z).
+    pub d: (i128, i128),
+    /// R: thread start X − thread end X, radius increments.
+    pub r: i128,
+    /// The lead, lead counts.
+    pub lead: i64,
+    /// J and K as written (modal), absolute values (G92.JK.7).
+    pub j: Option<i64>,
+    pub k: Option<i64>,
+    /// L starts.
+    pub l: u32,
+    /// Pass index within the run.
+    pub index: u32,
+    pub line: u32,
+}
+
+/// G92.TAPER (M002): C.x = D.x + R (radius), U = D.x − A.x (diameter). When R ≠ 0, U ≠ 0 and
+/// they differ in sign, 2·|R| ≤ |U| is required, else `GEOMETRY` on R.
+pub fn taper_ok(r: i128, u: i128) -> bool {
+    if r != 0 && u != 0 && (r < 0) != (u < 0) {
+        2 * r.abs() <= u.abs()
+    } else {
+        true
+    }
+}
+
+/// COM.SIDE (M001, M002) for G92: s = sign(A.x − C.x); 0 has no retract direction.
+pub fn side(a_x: i128, c_x: i128) -> i128 {
+    (a_x - c_x).signum()
+}
+
+/// No.19 (G92.JK.1, G92.JK.2): the pull-out amount c = round(No.19 × lead / 10), converted from
+/// the lead grid to the length grid (half up).
+pub fn no19_amount(no19: u32, lead: i64, grid: Grid) -> i128 {
+    round_div(no19 as i128 * lead as i128, 10 * grid.lead_counts_per_increment() as i128)
+}
+
+/// G92.JK.1–G92.JK.7 (M002) as one function of J, K (absolute values, JK.7) and the No.19
+/// amount c. Returns the resolved (J, K) and the rule that decided them, or `None` for no
+/// pull-out.
+///
+/// | J | K | result | rule |
+/// |---|---|---|---|
+/// | – | – | (c, c) | JK.1 |
+/// | – | K | (c, K); K = 0 → (c, c) | JK.2 |
+/// | 0 | any | none | JK.4 / JK.6 |
+/// | J | – | (J, J) | JK.3 |
+/// | J | 0 | (J, J) | JK.5 |
+/// | J | K | (J, K) | PULLOUT |
+///
+/// A resolved amount of 0 means no pull-out.
+pub fn resolve_jk(j: Option<i64>, k: Option<i64>, c: i128) -> Option<(Amounts, Rule)> {
+    let j = j.map(|v| v.unsigned_abs() as i128);
+    let k = k.map(|v| v.unsigned_abs() as i128);
+    let (amounts, rule) = match (j, k) {
+        (None, None) => (Amounts { j: c, k: c }, Rule::G92Jk1),
+        (None, Some(0)) => (Amounts { j: c, k: c }, Rule::G92Jk2),
+        (None, Some(k)) => (Amounts { j: c, k }, Rule::G92Jk2),
+        (Some(0), None) | (Some(0), Some(0)) => return None, // JK.4
+        (Some(0), Some(_)) => return None,                   // JK.6
+        (Some(j), None) => (Amounts { j, k: j }, Rule::G92Jk3),
+        (Some(j), Some(0)) => (Amounts { j, k: j }, Rule::G92Jk5),
+        (Some(j), Some(k)) => (Amounts { j, k }, Rule::G92Pullout),
+    };
+    if amounts.j == 0 || amounts.k == 0 {
+        None
+    } else {
+        Some((amounts, rule))
+    }
+}
+
+/// Checks the cycle (in the register's order) and emits it (G92.PATH).
+pub fn expand(c: &G92Cycle, params: &Params, grid: Grid, out: &mut Out) -> Result<(), Alarm> {
+    let line = c.line;
+    let (ax, az) = c.a;
+    let (dx, dz) = c.d;
+    // G92.FORMAT: W = 0 is a face thread.
+    let w = dz - az;
+    if w == 0 {
+        return Err(alarm(AlarmCode::Geometry, b'Z', Rule::G92Format, line));
+    }
+    // G92.TAPER
+    let u = dx - ax;
+    if !taper_ok(c.r, u) {
+        return Err(alarm(AlarmCode::Geometry, b'R', Rule::G92Taper, line));
+    }
+    // COM.SIDE
+    let cx = dx + 2 * c.r;
+    let s = side(ax, cx);
+    if s == 0 {
+        return Err(alarm(AlarmCode::Geometry, b'X', Rule::ComSide, line));
+    }
+    // No.19 (parameter range 0…255)
+    if params.no19_pullout > 255 {
+        return Err(Alarm::new(AlarmCode::OutOfRange, None, Rule::G92Jk1, line));
+    }
+    let amount = no19_amount(params.no19_pullout, c.lead, grid);
+    let pull = resolve_jk(c.j, c.k, amount);
+    // G92.JK.8: only No.107 = 0 is modelled.
+    if params.no107_pullout_speed != 0 {
+        return Err(Alarm::new(AlarmCode::Unsupported, None, Rule::G92Jk8, line));
+    }
+    // G92.PULLOUT: K less than the long-axis travel.
+    let thread = ThreadLine { end_x: dx, end_z: dz, r: c.r, w, s };
+    let segment = match pull {
+        Some((amounts, rule)) => match pullout::segment(&thread, amounts) {
+            Ok(seg) => Some((seg, rule)),
+            Err(pullout::KTooLong) => return Err(alarm(AlarmCode::Geometry, b'K', Rule::G92Pullout, line)),
+        },
+        None => None,
+    };
+    // PRJ.MAXPASS: one pass × L starts.
+    crate::multipass::check_max_passes(1, c.l as u128, params, b'L', line)?;
+
+    // PRJ.TRACE: one pass, depth = |A.x − C.x| (the X infeed of step ①).
+    out.pass(c.index, PassKind::Rough, (ax - cx).abs(), Rule::G92Path, line)?;
+    for j in 0..c.l {
+        let angle = start_angle(j, c.l);
+        out.rapid(cx, az, Rule::G92Path, line)?; // ①
+        match segment {
+            Some(((start, end), rule)) => {
+                out.thread(start.0, start.1, c.lead, angle, Rule::G92Path, line)?; // ②
+                out.thread(end.0, end.1, c.lead, angle, rule, line)?;
+            }
+            None => out.thread(dx, dz, c.lead, angle, Rule::G92Path, line)?,
+        }
+        let z_now = out.z as i128;
+        out.rapid(ax, z_now, Rule::G92Path, line)?; // ③
+        out.rapid(ax, az, Rule::G92Path, line)?; // ④
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn jk_table() {
+        let c = 30;
+        assert_eq!(resolve_jk(None, None, c), Some((Amounts { j: 30, k: 30 }, Rule::G92Jk1)));
+        assert_eq!(resolve_jk(None, Some(-5), c), Some((Amounts { j: 30, k: 5 }, Rule::G92Jk2)));
+        assert_eq!(resolve_jk(None, Some(0), c), Some((Amounts { j: 30, k: 30 }, Rule::G92Jk2)));
+        assert_eq!(resolve_jk(Some(0), None, c), None);
+        assert_eq!(resolve_jk(Some(0), Some(7), c), None);
+        assert_eq!(resolve_jk(Some(-4), None, c), Some((Amounts { j: 4, k: 4 }, Rule::G92Jk3)));
+        assert_eq!(resolve_jk(Some(4), Some(0), c), Some((Amounts { j: 4, k: 4 }, Rule::G92Jk5)));
+        assert_eq!(resolve_jk(Some(4), Some(9), c), Some((Amounts { j: 4, k: 9 }, Rule::G92Pullout)));
+        assert_eq!(resolve_jk(None, None, 0), None);
+    }
+
+    #[test]
+    fn taper_rule() {
+        assert!(taper_ok(0, 100));
+        assert!(taper_ok(-50, 100));
+        assert!(!taper_ok(-51, 100));
+        assert!(taper_ok(100, 100));
+        assert!(taper_ok(5, 0));
+    }
+
+    #[test]
+    fn no19_is_tenths_of_the_lead() {
+        assert_eq!(no19_amount(10, 30_000, Grid::METRIC_ISB), 3_000);
+        assert_eq!(no19_amount(5, 15_001, Grid::METRIC_ISB), 750); // 750.05 → 750
+        assert_eq!(no19_amount(1, 15, Grid::METRIC_ISB), 0); // 0.15 → 0
+        assert_eq!(no19_amount(1, 50, Grid::METRIC_ISB), 1); // 0.5 → 1
+    }
+}

@@ -1,0 +1,95 @@
+//! Infeed points Bn of G76 (M001) and G78 (M000): G76.INFEED.X, G76.INFEED.Z, G76.MODE,
+//! G78.MODE, G76.FINISH.Z (docs/INTERPRETATION.md, "Infeed X", "Infeed Z and the modes").
+
+use super::Cycle;
+use crate::tangent::round_mul_tan_half_angle;
+
+/// Which flank a rough pass follows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Flank {
+    Right,
+    Centre,
+    Left,
+}
+
+/// G76.MODE (M001): e = 0 right flank; 1 odd passes right, even centre; 2 odd left, even right.
+/// G78.MODE (M000): 0 centre; 1 left; 2 right; 3 odd right, even centre; 4 odd left, even right.
+/// `n` is the pass index among the rough passes (1-based).
+pub fn flank(cycle: Cycle, mode: u32, n: u64) -> Flank {
+    let odd = n % 2 == 1;
+    match (cycle, mode) {
+        (Cycle::G76, 1) | (Cycle::G78, 3) => {
+            if odd {
+                Flank::Right
+            } else {
+                Flank::Centre
+            }
+        }
+        (Cycle::G76, 2) | (Cycle::G78, 4) => {
+            if odd {
+                Flank::Left
+            } else {
+                Flank::Right
+            }
+        }
+        (Cycle::G78, 0) => Flank::Centre,
+        (Cycle::G78, 1) => Flank::Left,
+        _ => Flank::Right,
+    }
+}
+
+/// G76.INFEED.X (M001): pass at radius depth δ: X = D.x + i + s·(k − δ) (radius), on diameter
+/// D.x + 2i + 2s(k − δ) = C.x + 2s(k − δ).
+pub fn infeed_x(c_x: i128, s: i128, k: i64, depth: i64) -> i128 {
+    c_x + 2 * s * (k as i128 - depth as i128)
+}
+
+/// t(δ) = round(δ·tan(a/2)) (G76.INFEED.Z), exact (see [`crate::tangent`]); a ≤ 99.
+pub fn t(depth: i64, a: u32) -> i128 {
+    round_mul_tan_half_angle(depth, a).unwrap_or(0) as i128
+}
+
+/// G76.INFEED.Z (M001) with the modes: σ = −s (positive infeed shifts +Z, negative −Z);
+/// right flank Z = A.z + σ·t(δ); centre Z = A.z + σ·t(T); left flank
+/// Z = A.z + σ·(2·t(T) − t(δ)), the mirror of the right flank about the centre.
+pub fn infeed_z(a_z: i128, s: i128, t_depth: i128, t_last: i128, flank: Flank) -> i128 {
+    let sigma = -s;
+    match flank {
+        Flank::Right => a_z + sigma * t_depth,
+        Flank::Centre => a_z + sigma * t_last,
+        Flank::Left => a_z + sigma * (2 * t_last - t_depth),
+    }
+}
+
+/// G76.FINISH.Z (M001): finishing passes start at the Z of the last rough pass, A.z + σ·t(T).
+pub fn finish_z(a_z: i128, s: i128, t_last: i128) -> i128 {
+    a_z - s * t_last
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn g76_example_infeed() {
+        // C.x 60, external, k 3: depths 1.8, 2.5, 3 → X 62.4, 61.0, 60.0
+        assert_eq!(infeed_x(60_000, 1, 3_000, 1_800), 62_400);
+        assert_eq!(infeed_x(60_000, 1, 3_000, 2_500), 61_000);
+        assert_eq!(infeed_x(60_000, 1, 3_000, 3_000), 60_000);
+        // a = 45: tan 22.5° = 0.41421…; 1.8 → 0.746, 2.5 → 1.036
+        assert_eq!(t(1_800, 45), 746);
+        assert_eq!(t(2_500, 45), 1_036);
+        assert_eq!(infeed_z(10_000, 1, 746, 1_036, Flank::Right), 9_254);
+        assert_eq!(infeed_z(10_000, 1, 746, 1_036, Flank::Left), 10_000 - 1_326);
+        assert_eq!(infeed_z(10_000, -1, 746, 1_036, Flank::Centre), 11_036);
+    }
+
+    #[test]
+    fn modes() {
+        assert_eq!(flank(Cycle::G76, 0, 2), Flank::Right);
+        assert_eq!(flank(Cycle::G76, 1, 2), Flank::Centre);
+        assert_eq!(flank(Cycle::G76, 2, 1), Flank::Left);
+        assert_eq!(flank(Cycle::G78, 0, 1), Flank::Centre);
+        assert_eq!(flank(Cycle::G78, 4, 2), Flank::Right);
+    }
+}

@@ -1,0 +1,244 @@
+//! `round(δ·tan θ)` exactly, for θ a whole number of half degrees, 0 ≤ θ < 90°
+//! (G76.INFEED.Z: θ = a/2 with a = 0…99; G76.PULLOUT: θ = parameter 5131, 1…89°).
+//!
+//! # Argument
+//!
+//! Write θ = h·π/360 with h = 0…179. tan 0 = 0 and tan 45° = 1 are exact (h = 0, h = 90). For
+//! every other h, tan θ is irrational (the only rational values of tan at rational multiples of
+//! π are 0 and ±1), so δ·tan θ is never exactly k + ½ for δ ≠ 0 and the rounding is decided by
+//! any enclosure narrow enough. The enclosure is computed in fixed point with scale 2^p:
+//!
+//! 1. **π** by Machin's formula π = 16·atan(1/5) − 4·atan(1/239). Each series term
+//!    ⌊2^p / ((2j+1)·x^(2j+1))⌋ is exact up to < 1 unit (nested floors of integer divisions equal
+//!    one floor), the series alternate with decreasing terms, so stopping at the first term that
+//!    floors to 0 leaves a tail < 1 unit: each atan is within (terms + 1) units, π·2^p within
+//!    16·e₁ + 4·e₂ units.
+//! 2. **θ** enclosed by θ_lo = ⌊h·π_lo/360⌋, θ_hi = ⌈h·π_hi/360⌉ (both exact fixed-point values
+//!    below π/2 for p ≥ 64).
+//! 3. **sin, cos** at the exact endpoints by Taylor series. Term n+2 is term n times x²/((n+1)(n+2))
+//!    computed with a floor; as x < 1.6 the factor is < 1, so the error of the j-th term grows by
+//!    at most one unit per step (≤ j units), and once a term floors to 0 the alternating,
+//!    decreasing tail is below N + 1 units. Total error ≤ (N + 2)² units for N terms.
+//!    sin is increasing and cos decreasing on [0, π/2], so sin θ ∈ [sin θ_lo − e, sin θ_hi + e],
+//!    cos θ ∈ [cos θ_hi − e, cos θ_lo + e].
+//! 4. **tan** ∈ [⌊sin_lo·2^p / cos_hi⌋, ⌈sin_hi·2^p / cos_lo⌉]·2^-p, hence δ·tan θ in
+//!    [δ·t_lo, δ·t_hi]·2^-p. If ⌊δ·t_lo·2^-p + ½⌋ = ⌊δ·t_hi·2^-p + ½⌋ that is the rounding;
+//!    otherwise p is doubled and the enclosure recomputed.
+//!
+//! Enclosures are cached per (h, p). Termination: the enclosure width tends to 0 as p grows and
+//! the value is not a rounding boundary; a cap of 2^14 bits stops the loop for robustness (it is
+//! never reached for |δ| < 2^63, which needs < 200 bits).
+
+use num_bigint::{BigInt, Sign};
+use num_integer::Integer;
+use num_traits::{One, Signed, Zero};
+use std::collections::HashMap;
+use std::sync::{Mutex, OnceLock};
+
+/// The starting precision in bits.
+const BASE_BITS: u64 = 192;
+/// The largest precision tried.
+const MAX_BITS: u64 = 1 << 14;
+
+/// `round(δ·tan(h/2 degrees))`, half up on the magnitude, for `h` = 0…179 (θ < 90°).
+/// `h ≥ 180` is outside the domain and yields `None`.
+pub fn round_mul_tan_half_degrees(delta: i64, h: u32) -> Option<i64> {
+    if h >= 180 {
+        return None;
+    }
+    if h == 0 || delta == 0 {
+        return Some(0);
+    }
+    if h == 90 {
+        return Some(delta);
+    }
+    let mag = BigInt::from(delta.unsigned_abs());
+    let mut p = BASE_BITS;
+    loop {
+        let (t_lo, t_hi) = tan_enclosure(h, p);
+        let lo = round_scaled(&(&mag * &t_lo), p);
+        let hi = round_scaled(&(&mag * &t_hi), p);
+        if lo == hi || p >= MAX_BITS {
+            let v = i64::try_from(lo).ok()?;
+            return Some(if delta < 0 { -v } else { v });
+        }
+        p *= 2;
+    }
+}
+
+/// `round(δ·tan(a/2))` for the tool angle `a` in whole degrees (G76.INFEED.Z).
+pub fn round_mul_tan_half_angle(delta: i64, a_degrees: u32) -> Option<i64> {
+    round_mul_tan_half_degrees(delta, a_degrees)
+}
+
+/// `round(δ·tan θ)` for θ in whole degrees (G76.PULLOUT, parameter 5131).
+pub fn round_mul_tan_degrees(delta: i64, degrees: u32) -> Option<i64> {
+    round_mul_tan_half_degrees(delta, degrees.checked_mul(2)?)
+}
+
+/// ⌊v·2^-p + ½⌋ for v ≥ 0.
+fn round_scaled(v: &BigInt, p: u64) -> BigInt {
+    let half = BigInt::one() << (p - 1);
+    (v + half) >> p
+}
+
+/// [t_lo, t_hi] with t_lo·2^-p ≤ tan(h·π/360) ≤ t_hi·2^-p, cached.
+fn tan_enclosure(h: u32, p: u64) -> (BigInt, BigInt) {
+    static CACHE: OnceLock<Mutex<HashMap<(u32, u64), (BigInt, BigInt)>>> = OnceLock::new();
+    let cache = CACHE.get_or_init(|| Mutex::new(HashMap::new()));
+    if let Some(v) = cache.lock().unwrap_or_else(|e| e.into_inner()).get(&(h, p)) {
+        return v.clone();
+    }
+    let v = compute_tan_enclosure(h, p);
+    cache.lock().unwrap_or_else(|e| e.into_inner()).insert((h, p), v.clone());
+    v
+}
+
+fn compute_tan_enclosure(h: u32, p: u64) -> (BigInt, BigInt) {
+    let one = BigInt::one() << p;
+    let (pi, pi_err) = pi_fixed(&one);
+    let pi_lo = &pi - BigInt::from(pi_err);
+    let pi_hi = &pi + BigInt::from(pi_err);
+    let h = BigInt::from(h);
+    let d360 = BigInt::from(360);
+    let theta_lo = (&h * &pi_lo).div_floor(&d360);
+    let theta_hi = (&h * &pi_hi).div_ceil(&d360);
+    let (s_lo_c, e1) = sin_fixed(&theta_lo, p);
+    let (s_hi_c, e2) = sin_fixed(&theta_hi, p);
+    let (c_lo_c, e3) = cos_fixed(&theta_hi, p);
+    let (c_hi_c, e4) = cos_fixed(&theta_lo, p);
+    let mut sin_lo = s_lo_c - BigInt::from(e1);
+    if sin_lo.is_negative() {
+        sin_lo = BigInt::zero();
+    }
+    let sin_hi = s_hi_c + BigInt::from(e2);
+    let cos_lo = c_lo_c - BigInt::from(e3);
+    let cos_hi = c_hi_c + BigInt::from(e4);
+    if cos_lo.sign() != Sign::Plus {
+        // Precision too low to separate cos from 0: an enclosure that decides nothing.
+        return (BigInt::zero(), BigInt::one() << (2 * p));
+    }
+    let t_lo = (&sin_lo << p).div_floor(&cos_hi);
+    let t_hi = (&sin_hi << p).div_ceil(&cos_lo);
+    (t_lo, t_hi)
+}
+
+/// atan(1/x)·2^p (as a sum of floored terms) and its error bound in units.
+fn atan_inv(x: u64, one: &BigInt) -> (BigInt, u64) {
+    let x2 = BigInt::from(x * x);
+    let mut power = one / BigInt::from(x); // ⌊2^p / x^(2j+1)⌋
+    let mut sum = BigInt::zero();
+    let mut j: u64 = 0;
+    loop {
+        let term = &power / BigInt::from(2 * j + 1);
+        if term.is_zero() {
+            break;
+        }
+        if j % 2 == 0 {
+            sum += term;
+        } else {
+            sum -= term;
+        }
+        power = power / &x2;
+        j += 1;
+    }
+    (sum, j + 1)
+}
+
+/// π·2^p and its error bound in units (Machin).
+fn pi_fixed(one: &BigInt) -> (BigInt, u64) {
+    let (a5, e5) = atan_inv(5, one);
+    let (a239, e239) = atan_inv(239, one);
+    (a5 * 16 - a239 * 4, 16 * e5 + 4 * e239)
+}
+
+/// Σ (−1)^j x^(2j+start)/(2j+start)! in fixed point, x = x_fixed·2^-p, 0 ≤ x < 1.6; returns the
+/// sum and its error bound (N + 2)² in units.
+fn taylor(x_fixed: &BigInt, p: u64, start: u32) -> (BigInt, u64) {
+    let one = BigInt::one() << p;
+    let x2 = x_fixed * x_fixed; // scale 2^(2p)
+    let mut term = if start == 0 { one } else { x_fixed.clone() };
+    let mut n = start as u64;
+    let mut sum = BigInt::zero();
+    let mut count: u64 = 0;
+    let mut positive = true;
+    while !term.is_zero() {
+        if positive {
+            sum += &term;
+        } else {
+            sum -= &term;
+        }
+        count += 1;
+        positive = !positive;
+        let div = (BigInt::from((n + 1) * (n + 2))) << (2 * p);
+        term = (&term * &x2) / div;
+        n += 2;
+    }
+    (sum, (count + 2) * (count + 2))
+}
+
+fn sin_fixed(x: &BigInt, p: u64) -> (BigInt, u64) {
+    taylor(x, p, 1)
+}
+
+fn cos_fixed(x: &BigInt, p: u64) -> (BigInt, u64) {
+    taylor(x, p, 0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The largest q ≥ 0 with (2q − 1)²·den ≤ 4·num, i.e. round(√(num/den)) half up
+    /// (√(num/den) is never exactly q − ½ when it is irrational).
+    fn round_sqrt_ratio(num: u128, den: u128) -> i64 {
+        let target = 4 * num;
+        let mut q = ((num / den) as f64).sqrt() as i64 + 2;
+        while q > 0 && ((2 * q - 1) as u128).pow(2) * den > target {
+            q -= 1;
+        }
+        q
+    }
+
+    #[test]
+    fn exact_cases() {
+        assert_eq!(round_mul_tan_degrees(1234, 45), Some(1234));
+        assert_eq!(round_mul_tan_half_angle(1234, 0), Some(0));
+        assert_eq!(round_mul_tan_half_angle(-1234, 90), Some(-1234));
+        assert_eq!(round_mul_tan_half_degrees(5, 180), None);
+    }
+
+    #[test]
+    fn against_square_root_references() {
+        let mut deltas: Vec<i64> = (1..400).collect();
+        let mut s = 0x9e37_79b9_7f4a_7c15u64;
+        for _ in 0..200 {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            deltas.push((s % 999_999_999) as i64 + 1);
+        }
+        for &d in &deltas {
+            let d2 = (d as u128) * (d as u128);
+            // tan 30° = 1/√3, tan 60° = √3
+            assert_eq!(round_mul_tan_degrees(d, 30), Some(round_sqrt_ratio(d2, 3)), "30° {d}");
+            assert_eq!(round_mul_tan_degrees(d, 60), Some(round_sqrt_ratio(3 * d2, 1)), "60° {d}");
+            assert_eq!(round_mul_tan_half_angle(d, 120), Some(round_sqrt_ratio(3 * d2, 1)));
+            // tan 22.5° = √2 − 1: round(√2·δ) − δ (an integer shift keeps the rounding)
+            assert_eq!(
+                round_mul_tan_half_angle(d, 45),
+                Some(round_sqrt_ratio(2 * d2, 1) - d),
+                "22.5° {d}"
+            );
+            assert_eq!(round_mul_tan_half_angle(-d, 45), Some(-(round_sqrt_ratio(2 * d2, 1) - d)));
+        }
+    }
+
+    #[test]
+    fn steep_angles_are_decided() {
+        // tan 89.5° ≈ 114.589; tan 89° ≈ 57.29
+        assert_eq!(round_mul_tan_half_degrees(1000, 179), Some(114_589));
+        assert_eq!(round_mul_tan_degrees(1000, 89), Some(57_290));
+        assert_eq!(round_mul_tan_degrees(1000, 1), Some(17));
+    }
+}
