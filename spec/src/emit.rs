@@ -21,14 +21,14 @@ impl Out {
         Out { events: Vec::new(), x, z }
     }
 
-    /// PRJ.TRACE: a pass header; `diameter_depth` is twice the radius depth.
+    /// PRJ.TRACE (PRJ): a pass header; `diameter_depth` is twice the radius depth.
     pub fn pass(&mut self, index: u32, kind: PassKind, diameter_depth: i128, rule: Rule, line: u32) -> Result<(), Alarm> {
         let diameter_depth = coordinate(diameter_depth, b'X', line)?;
         self.events.push(Event::Pass(Pass { index, kind, diameter_depth, rule }));
         Ok(())
     }
 
-    /// PRJ.NOOP: a move to the current position is not emitted. Otherwise the move is appended
+    /// PRJ.NOOP (PRJ): a move to the current position is not emitted. Otherwise the move is appended
     /// and becomes the current position.
     #[allow(clippy::too_many_arguments)]
     fn go(&mut self, kind: MoveKind, x: i128, z: i128, feed: i64, angle: u32, rule: Rule, line: u32) -> Result<(), Alarm> {

@@ -87,7 +87,7 @@ pub struct Machine<'c> {
 const ALWAYS: &[u8] = b"MNOST";
 
 impl<'c> Machine<'c> {
-    /// PRJ.MODAL: the machine starts at the configured start point, in G00, with no feed.
+    /// PRJ.MODAL (PRJ): the machine starts at the configured start point, in G00, with no feed.
     pub fn new(config: &'c Config) -> Machine<'c> {
         Machine {
             config,
@@ -119,7 +119,7 @@ impl<'c> Machine<'c> {
         Ok(end)
     }
 
-    /// PRJ.SUPPORTED, COM.UNITS, PRJ.DIALECT: every G and M code of the block is supported.
+    /// PRJ.SUPPORTED (PRJ), COM.UNITS (M000, M001), PRJ.DIALECT (PRJ): every G and M code of the block is supported.
     /// Returns the motion/cycle code written (if one) and whether the block ends the program.
     fn codes(&self, b: &Block) -> Result<(Option<Code>, bool), Alarm> {
         let line = b.line;
@@ -170,7 +170,8 @@ impl<'c> Machine<'c> {
     }
 
     /// The block's kind: its written code, else the modal motion mode; G76/G78 blocks are first
-    /// blocks without X, U, Z, W and second blocks with any of them (G76.FORMAT).
+    /// blocks without X, U, Z, W and second blocks with any of them (G76.FORMAT, M001; PRJ.MODAL,
+    /// PRJ).
     fn kind(&self, b: &Block, code: Option<Code>) -> Kind {
         let axes = has_axis(b);
         match code {
@@ -189,7 +190,7 @@ impl<'c> Machine<'c> {
         }
     }
 
-    /// PRJ.WORD, F76.FORMAT: the words each kind of block accepts, checked in alphabetical order.
+    /// PRJ.WORD (PRJ), F76.FORMAT (M003): the words each kind of block accepts, checked in alphabetical order.
     fn words_allowed(&self, b: &Block, kind: Kind) -> Result<(), Alarm> {
         let fanuc = self.config.dialect == Dialect::Fanuc;
         let (own, gsk_own): (&[u8], &[u8]) = match kind {
@@ -210,7 +211,7 @@ impl<'c> Machine<'c> {
         Ok(())
     }
 
-    /// COM.UNITS, COM.RANGES, COM.LEAD, PRJ.DIALECT: each word's value, in alphabetical order.
+    /// COM.UNITS, COM.RANGES, COM.LEAD (M000, M001, M002), PRJ.DIALECT (PRJ): each word's value, in alphabetical order.
     fn values(&self, b: &Block, kind: Kind) -> Result<Values, Alarm> {
         let cfg = self.config;
         let grid = cfg.grid;
@@ -252,21 +253,21 @@ impl<'c> Machine<'c> {
         Ok(v)
     }
 
-    /// COM.LEAD: F and I set one modal feed value (F and I never both: conflicts).
+    /// COM.LEAD (M001, M002): F and I set one modal feed value (F and I never both: conflicts).
     fn take_lead(&mut self, v: &Values) {
         if let Some(f) = v.get(b'F').or(v.get(b'I')) {
             self.feed = Some(f);
         }
     }
 
-    /// COM.ABSINC: the end point of X(U) and Z(W), `None` for an omitted axis.
+    /// COM.ABSINC (M001, M002): the end point of X(U) and Z(W), `None` for an omitted axis.
     fn end_point(&self, v: &Values) -> (Option<i128>, Option<i128>) {
         let x = v.get(b'X').map(i128::from).or(v.get(b'U').map(|u| self.out.x as i128 + u as i128));
         let z = v.get(b'Z').map(i128::from).or(v.get(b'W').map(|w| self.out.z as i128 + w as i128));
         (x, z)
     }
 
-    /// G00 / G01 (PRJ.MODAL): one move to the end point, both axes together; G01 at the modal
+    /// G00 / G01 (PRJ.MODAL, PRJ): one move to the end point, both axes together; G01 at the modal
     /// feed (COM.LEAD: `MISSING WORD F` when a G01 block moves with no feed set).
     fn linear(&mut self, b: &Block, kind: Kind, v: &Values) -> Result<(), Alarm> {
         self.take_lead(v);
@@ -338,7 +339,7 @@ impl<'c> Machine<'c> {
         g92::expand(&cycle, &self.config.params, self.config.grid, &mut self.out)
     }
 
-    /// G76.FORMAT / G78.FORMAT: a first block replaces that code's memory; omitted words fall
+    /// G76.FORMAT (M001) / G78.FORMAT (M000): a first block replaces that code's memory; omitted words fall
     /// back to their defaults again.
     fn first_block(&mut self, cycle: Cycle, v: &Values) {
         let mem = FirstBlock {
@@ -355,7 +356,7 @@ impl<'c> Machine<'c> {
         }
     }
 
-    /// G76.FORMAT / G78.FORMAT second block: missing words (lead F, then P, then Q), then the
+    /// G76.FORMAT (M001) / G78.FORMAT (M000) second block, G76.REQUIRED (M001): missing words (lead F, then P, then Q), then the
     /// cycle. G76/G78 do not change the motion mode.
     fn second_block(&mut self, b: &Block, cycle: Cycle, v: &Values) -> Result<(), Alarm> {
         let line = b.line;
@@ -403,7 +404,7 @@ fn code_count(b: &Block) -> usize {
         .count()
 }
 
-/// PRJ.WORD, COM.ABSINC, COM.LEAD: two motion codes; X with U; Z with W; F with I.
+/// PRJ.WORD (PRJ), COM.ABSINC, COM.LEAD (M001, M002): two motion codes; X with U; Z with W; F with I.
 fn conflicts(b: &Block, motion_codes: usize) -> Result<(), Alarm> {
     let line = b.line;
     if motion_codes > 1 {

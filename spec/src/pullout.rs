@@ -5,6 +5,9 @@
 //! short axis retracts J (toward the start point A) while the long axis keeps threading to the
 //! end. The exponential profile of the real machine changes timing, not end points.
 
+/// A point (X diameter, Z), increments.
+pub type Point = (i128, i128);
+
 /// One thread line from its start to its end `(end_x, end_z)` (X on diameter).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ThreadLine {
@@ -66,7 +69,7 @@ pub struct KTooLong;
 ///   Z = end.z − sz·round(|W|·K/|R|); end at X = end.x, Z = end.z − sz·J (toward A on Z).
 ///
 /// K must be less than the long-axis travel, else [`KTooLong`] (`GEOMETRY` on K).
-pub fn segment(line: &ThreadLine, a: Amounts) -> Result<((i128, i128), (i128, i128)), KTooLong> {
+pub fn segment(line: &ThreadLine, a: Amounts) -> Result<(Point, Point), KTooLong> {
     if a.k >= long_travel(line.w, line.r) {
         return Err(KTooLong);
     }

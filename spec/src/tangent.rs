@@ -26,8 +26,11 @@
 //!    otherwise p is doubled and the enclosure recomputed.
 //!
 //! Enclosures are cached per (h, p). Termination: the enclosure width tends to 0 as p grows and
-//! the value is not a rounding boundary; a cap of 2^14 bits stops the loop for robustness (it is
-//! never reached for |δ| < 2^63, which needs < 200 bits).
+//! the value is not a rounding boundary, so some p decides. The first try uses 192 bits, which
+//! leaves about 150 bits of margin beyond the size of any product the cycles form (|δ| < 2^31,
+//! tan < 2^7); a value that close to k + ½ has not been observed. A cap of 2^14 bits bounds the
+//! loop all the same (robustness: never panic, bounded time); at the cap the rounding of the
+//! lower bound is returned.
 
 use num_bigint::{BigInt, Sign};
 use num_integer::Integer;
@@ -84,7 +87,8 @@ fn round_scaled(v: &BigInt, p: u64) -> BigInt {
 
 /// [t_lo, t_hi] with t_lo·2^-p ≤ tan(h·π/360) ≤ t_hi·2^-p, cached.
 fn tan_enclosure(h: u32, p: u64) -> (BigInt, BigInt) {
-    static CACHE: OnceLock<Mutex<HashMap<(u32, u64), (BigInt, BigInt)>>> = OnceLock::new();
+    type Cache = Mutex<HashMap<(u32, u64), (BigInt, BigInt)>>;
+    static CACHE: OnceLock<Cache> = OnceLock::new();
     let cache = CACHE.get_or_init(|| Mutex::new(HashMap::new()));
     if let Some(v) = cache.lock().unwrap_or_else(|e| e.into_inner()).get(&(h, p)) {
         return v.clone();
@@ -129,17 +133,19 @@ fn atan_inv(x: u64, one: &BigInt) -> (BigInt, u64) {
     let mut power = one / BigInt::from(x); // ⌊2^p / x^(2j+1)⌋
     let mut sum = BigInt::zero();
     let mut j: u64 = 0;
+    let mut positive = true;
     loop {
         let term = &power / BigInt::from(2 * j + 1);
         if term.is_zero() {
             break;
         }
-        if j % 2 == 0 {
+        if positive {
             sum += term;
         } else {
             sum -= term;
         }
-        power = power / &x2;
+        positive = !positive;
+        power /= &x2;
         j += 1;
     }
     (sum, j + 1)

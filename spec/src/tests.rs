@@ -273,3 +273,44 @@ fn random_input_never_panics() {
         assert!(expand(src.as_bytes(), &wild).alarm.is_some());
     }
 }
+
+/// COM.UNITS, COM.LEAD on the other grids: inch ISC lengths with 5 decimals, I as threads per
+/// inch, metric ISC.
+#[test]
+fn other_grids() {
+    use cycle_vocab::{Grid, Increment, Units};
+    let inch = Config { grid: Grid { units: Units::Inch, increment: Increment::Isc }, ..Config::default() };
+    let t = expand(b"G20\nG0 X2.5 Z0.2\nG92 X2.3 Z-1 I20 J0\n", &inch);
+    assert_eq!(t.alarm, None);
+    let th: Vec<&Move> = t.moves().filter(|m| m.kind == MoveKind::Thread).collect();
+    assert_eq!((th[0].x, th[0].z, th[0].feed), (230_000, -100_000, 5_000)); // 1/20 in
+    let metric_isc = Config { grid: Grid { units: Units::Metric, increment: Increment::Isc }, ..Config::default() };
+    let t = expand(b"G0 X65 Z5\nG92 X58.7001 Z-28 F3\n", &metric_isc);
+    assert_eq!(t.alarm, None);
+    // No.19 = 10: pull-out one lead (3 mm) on both axes.
+    let th: Vec<(i64, i64)> = t.moves().filter(|m| m.kind == MoveKind::Thread).map(|m| (m.x, m.z)).collect();
+    assert_eq!(th, vec![(587_001, -250_000), (587_001 + 60_000, -280_000)]);
+    let units = expand(b"G20\n", &Config::default());
+    assert_eq!(units.alarm, Some(Alarm::new(AlarmCode::Unsupported, Some(b'G'), Rule::ComUnits, 1)));
+}
+
+/// G76 internal thread (s = −1) with lead-in E: Z shifts +, X grows with depth.
+#[test]
+fn g76_internal_with_leadin() {
+    let t = run("G0 X20 Z5\nG76 P011060 Q0.1 R0.1 E1\nG76 X26 Z-20 P1.2 Q0.5 F2 R-0.5\n");
+    assert_eq!(t.alarm, None);
+    let m: Vec<(MoveKind, i64, i64, Rule)> = t.moves().skip(1).take(6).map(|m| (m.kind, m.x, m.z, m.rule)).collect();
+    // C.x = 26 − 1 = 25; δ 0.5 → X 25 − 2·0.7 = 23.6; Z = 5 + round(0.5·tan 30°) = 5.289;
+    // chamfer r 10 → K 2, J 2 (45°); En = (24.6, −19.711); pull-out start X = En.x + 2·round(−0.5·2/25).
+    assert_eq!(
+        m,
+        vec![
+            (MoveKind::Rapid, 21_600, 5_289, Rule::G76LeadIn),
+            (MoveKind::Thread, 23_600, 5_289, Rule::G76LeadIn),
+            (MoveKind::Thread, 24_600 - 80, -17_711, Rule::G76Path),
+            (MoveKind::Thread, 24_600 - 4_000, -19_711, Rule::G76Pullout),
+            (MoveKind::Rapid, 20_000, -19_711, Rule::G76Path),
+            (MoveKind::Rapid, 20_000, 5_000, Rule::G76Path),
+        ]
+    );
+}

@@ -78,7 +78,7 @@ pub struct SecondBlock {
     pub line: u32,
 }
 
-/// G76.FORMAT / G78.MODE / F76.FORMAT: the digits of P(m)(r)(a) as written in a first block.
+/// G76.FORMAT (M001) / G78.MODE (M000) / F76.FORMAT (M003): the digits of P(m)(r)(a) as written in a first block.
 /// m = 0 is `OUT OF RANGE` on P (G76.FINISH, OPEN); the G78 mode (middle digits) > 4 is `OUT OF
 /// RANGE` on P (G78.MODE); under `fanuc` the tool angle must be 80, 60, 55, 30, 29 or 0
 /// (F76.FORMAT).
@@ -107,7 +107,7 @@ pub fn fanuc_angle(a: u32) -> bool {
     matches!(a, 80 | 60 | 55 | 30 | 29 | 0)
 }
 
-/// PRJ.MAXPASS: `passes × starts` thread cuts must not exceed `max_passes` (1…1 000 000);
+/// PRJ.MAXPASS (PRJ): `passes × starts` thread cuts must not exceed `max_passes` (1…1 000 000);
 /// otherwise `TOO MANY PASSES` on `word`, before any motion of the cycle.
 pub fn check_max_passes(passes: u128, starts: u128, params: &Params, word: u8, line: u32) -> Result<(), Alarm> {
     let max = max_passes(params, line)?;
@@ -208,6 +208,7 @@ pub fn settings(cycle: Cycle, first: &FirstBlock, config: &Config, line: u32) ->
 /// J and K both omitted: K = chamfer width (r × lead / 10 when r was input, else 5130 × lead /
 /// 10, converted to the length grid), J = round(K·tan 5131°). J omitted, K given:
 /// J = round(K·tan 5131°). J given, K omitted or 0: K = J. A resolved J or K of 0: none.
+#[allow(clippy::too_many_arguments)]
 pub fn pullout_amounts(
     cycle: Cycle,
     j: Option<i64>,
@@ -242,7 +243,10 @@ pub fn chamfer_width(tenths: i64, lead: i64, grid: Grid) -> i128 {
     round_div(tenths as i128 * lead as i128, 10 * grid.lead_counts_per_increment() as i128)
 }
 
-/// Checks the second block (register order) and emits the cycle (G76.PATH).
+/// Checks the second block in the register's order — d < k (G76.DEPTH.LAST), W ≠ 0
+/// (G76.FORMAT), side (COM.SIDE), A not between B and C (COM.POINTS), the pass bound
+/// (PRJ.MAXPASS), K against the long axis (G76.PULLOUT) — and emits the cycle (G76.PATH, M001):
+/// rough passes, then G76.FINISH passes, each at its infeed point Bn.
 pub fn expand(cycle: Cycle, first: &FirstBlock, second: &SecondBlock, config: &Config, out: &mut Out) -> Result<(), Alarm> {
     let line = second.line;
     let set = settings(cycle, first, config, line)?;
