@@ -314,3 +314,14 @@ fn g76_internal_with_leadin() {
         ]
     );
 }
+
+/// PRJ.MAXPASS at the largest legal bound stays fast: the count is found by iterating the
+/// schedule at most max_passes + 1 times, before any motion.
+#[test]
+fn max_passes_bound_is_cheap() {
+    let mut c = Config::default();
+    c.params.max_passes = 1_000_000;
+    let t = expand(b"G0 X200 Z10\nG76 P010060 Q0 R0\nG76 X60 Z-60 P50 Q0.001 F3\n", &c);
+    assert_eq!(t.alarm, Some(Alarm::new(AlarmCode::TooManyPasses, Some(b'Q'), Rule::PrjMaxPass, 3)));
+    assert_eq!(t.events.len(), 1);
+}

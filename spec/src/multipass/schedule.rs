@@ -33,6 +33,10 @@ pub struct TooMany;
 /// in integers: Δd² − Δdmin² < 0, or (Δd² − Δdmin²)² < 4·Δd²·Δdmin²·(n−1).
 /// (From √n·Δd − Δdmin < √(n−1)·Δd, squared twice; both sides are non-negative where squared.)
 pub fn cuts_minimum(dd: i64, dmin: i64, n: u64) -> bool {
+    if dmin <= 0 {
+        // Δdmin = 0: the left side Δd² > 0 and the right side 0, so never (no minimum).
+        return false;
+    }
     let dd2 = BigInt::from(dd) * BigInt::from(dd);
     let m2 = BigInt::from(dmin) * BigInt::from(dmin);
     let lhs = &dd2 - &m2;
