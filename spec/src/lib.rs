@@ -7,6 +7,7 @@
 //!
 //! | module | rules |
 //! |---|---|
+//! | [`config`] | COM.RANGES of the start point, parameter ranges (line 0) |
 //! | [`program`] | PRJ.MODAL, PRJ.WORD, PRJ.SUPPORTED, PRJ.DIALECT, COM.ABSINC, check order |
 //! | [`words`] | COM.UNITS, COM.RANGES, COM.LEAD, F76.MICRONS |
 //! | [`exact`], [`tangent`] | the rounding rule: half up, once, on exact values |
@@ -16,6 +17,7 @@
 //! | [`emit`] | PRJ.TRACE, PRJ.NOOP, COM.MULTISTART |
 #![forbid(unsafe_code)]
 
+pub mod config;
 pub mod emit;
 pub mod exact;
 pub mod g92;
@@ -33,6 +35,9 @@ use cycle_vocab::{Blocks, Config};
 /// (PRJ.MAXPASS, checked before any motion of a cycle).
 pub fn expand(program: &[u8], config: &Config) -> Trace {
     let mut machine = program::Machine::new(config);
+    if let Err(a) = config::check(config) {
+        return Trace { grid: config.grid, events: Vec::new(), alarm: Some(a) };
+    }
     let mut alarm = None;
     for block in Blocks::new(program) {
         let result = match block {
