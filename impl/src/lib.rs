@@ -1,5 +1,11 @@
-//! Production expander (in progress).
+//! Production expander of the lathe thread cycles G92, G76, G78 and FANUC-style G76
+//! (in progress: the depth schedule and the fixed-point helpers are in place).
 #![no_std]
+#![forbid(unsafe_code)]
+
+pub mod fixed;
+pub mod schedule;
+
 use cycle_vocab::{Alarm, Config, Event};
 
 /// Streaming expansion of a program.

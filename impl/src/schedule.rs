@@ -1,0 +1,382 @@
+//! Depth schedule of the G76/G78 rough passes (G76.DEPTH.1, G76.DEPTH.MIN, G76.DEPTH.LAST,
+//! G78.DEPTHMODE), as a pure step function over exact integers.
+//!
+//! All lengths are radius increments. With Δd = `first_cut`, Δdmin = `min_cut`,
+//! T = `target` = k − d (docs/INTERPRETATION.md, "Depth schedule"):
+//!
+//! - degressive: pass n switches to minimum cuts at the first n ≥ 1 with
+//!   (√n − √(n−1))·Δd < Δdmin, decided in integers as Δd² − Δdmin² < 0 or
+//!   (Δd² − Δdmin²)² < 4·Δd²·Δdmin²·(n−1). Before the switch pass s the exact depth is √n·Δd,
+//!   from s on √(s−1)·Δd + (n − s + 1)·Δdmin; each exact depth is rounded once, half up;
+//! - constant (G78 D0): the exact depth is n·Δd;
+//! - a rounded depth ≥ T becomes T and is the last rough pass.
+//!
+//! The functions are total over every `i64`: parameters outside their domain are read as the
+//! nearest legal value (Δd ≥ 1, Δdmin ≥ 0, T ≥ 1). Arithmetic is exact over that whole domain
+//! (256-bit comparisons where products exceed 128 bits).
+
+use crate::fixed::{mul_wide, sqrt_round, U256};
+use cycle_vocab::Rule;
+
+/// Depth schedule of G76/G78 rough passes, all lengths radius increments.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ScheduleParams {
+    /// Δd ≥ 1: the first cut (G76 Q of the second block).
+    pub first_cut: i64,
+    /// Δdmin ≥ 0: the minimum cut (0 = no minimum).
+    pub min_cut: i64,
+    /// k − d ≥ 1: the depth of the last rough pass.
+    pub target: i64,
+    /// G78 depth mode 0: the depth of pass n is n·Δd.
+    pub constant: bool,
+}
+
+/// One rough pass of the schedule.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Rough {
+    /// 1-based pass number.
+    pub n: u32,
+    /// Radius depth from B, increments (rounded once, clamped to the target).
+    pub depth: i64,
+    /// Whether this is the last rough pass (its depth is the target).
+    pub last: bool,
+    /// The rule that set the depth: G76.DEPTH.1 (√n·Δd), G76.DEPTH.MIN (minimum cuts),
+    /// G76.DEPTH.LAST (clamped to k − d) or G78.DEPTHMODE (constant n·Δd).
+    pub rule: Rule,
+}
+
+/// The parameters read into their domain, as unsigned magnitudes (each < 2^63).
+struct Norm {
+    dd: u128,
+    dmin: u128,
+    target: u128,
+    constant: bool,
+}
+
+fn norm(p: &ScheduleParams) -> Norm {
+    let dd = p.first_cut.max(1).unsigned_abs();
+    let dmin = p.min_cut.max(0).unsigned_abs();
+    let target = p.target.max(1).unsigned_abs();
+    Norm { dd: u128::from(dd), dmin: u128::from(dmin), target: u128::from(target), constant: p.constant }
+}
+
+/// G76.DEPTH.MIN: whether pass `n` (≥ 1) lies at or after the switch to minimum cuts, i.e.
+/// (√n − √(n−1))·Δd < Δdmin. The condition is monotone in n, so "at or after the first n where
+/// it holds" is the condition itself.
+fn switched(q: &Norm, n: u32) -> bool {
+    if q.dmin == 0 {
+        return false; // Δdmin = 0: no minimum (the strict inequality never holds).
+    }
+    // Δd, Δdmin < 2^63: the squares are below 2^126.
+    let dd2 = q.dd * q.dd;
+    let dmin2 = q.dmin * q.dmin;
+    if dd2 < dmin2 {
+        return true;
+    }
+    let a = dd2 - dmin2; // < 2^126
+    let lhs = mul_wide(a, a); // (Δd² − Δdmin²)²
+    let c = 2 * q.dd * q.dmin; // 2·Δd·Δdmin < 2^127
+    let c2 = mul_wide(c, c); // 4·Δd²·Δdmin² < 2^254
+    match c2.checked_mul_u64(u64::from(n.saturating_sub(1))) {
+        Some(rhs) => lhs < rhs,
+        None => true, // the right side exceeds 2^256 > the left side
+    }
+}
+
+/// Clamps a rounded depth to the target (G76.DEPTH.LAST) and builds the pass.
+fn clamp(q: &Norm, n: u32, depth: u128, rule: Rule) -> Rough {
+    if depth >= q.target {
+        // target < 2^63 fits i64.
+        Rough { n, depth: i64::try_from(q.target).unwrap_or(i64::MAX), last: true, rule: Rule::G76DepthLast }
+    } else {
+        Rough { n, depth: i64::try_from(depth).unwrap_or(i64::MAX), last: false, rule }
+    }
+}
+
+/// G76.DEPTH.1: round(√n·Δd), clamped to T. Compared with T before the root is taken:
+/// round(√N) ≥ T ⇔ N > T·(T − 1), so the root is only taken below 2^126.
+fn sqrt_depth(q: &Norm, n: u32) -> Rough {
+    let big = mul_wide(q.dd * q.dd, u128::from(n)); // n·Δd²
+    let limit = q.target * (q.target - 1); // T ≥ 1, T < 2^63
+    if big > U256::from_u128(limit) {
+        return clamp(q, n, q.target, Rule::G76Depth1);
+    }
+    clamp(q, n, sqrt_round(big.lo), Rule::G76Depth1)
+}
+
+/// G78.DEPTHMODE 0: n·Δd (exact), clamped to T.
+fn constant_depth(q: &Norm, n: u32) -> Rough {
+    // n < 2^32, Δd < 2^63: the product is below 2^95.
+    clamp(q, n, u128::from(n) * q.dd, Rule::G78DepthMode)
+}
+
+/// The first rough pass (G76.DEPTH.1; G76.DEPTH.MIN when Δd < Δdmin; G78.DEPTHMODE).
+pub fn first(p: &ScheduleParams) -> Rough {
+    let q = norm(p);
+    if q.constant {
+        constant_depth(&q, 1)
+    } else if switched(&q, 1) {
+        // Switch at s = 1: √0·Δd + 1·Δdmin.
+        clamp(&q, 1, q.dmin, Rule::G76DepthMin)
+    } else {
+        sqrt_depth(&q, 1)
+    }
+}
+
+/// The rough pass after `prev` (G76.DEPTH.1, G76.DEPTH.MIN, G76.DEPTH.LAST, G78.DEPTHMODE);
+/// `None` when `prev` was the last one (or its number cannot grow).
+///
+/// Pure in (`p`, `prev`): before the switch the depth is recomputed from n; at and after the
+/// switch pass s the exact depth √(s−1)·Δd + (n − s + 1)·Δdmin is the previous pass's rounded,
+/// unclamped depth plus Δdmin (rounding commutes with adding an integer), so `prev.depth` is used.
+pub fn next(p: &ScheduleParams, prev: &Rough) -> Option<Rough> {
+    if prev.last {
+        return None;
+    }
+    let n = prev.n.checked_add(1)?;
+    let q = norm(p);
+    if q.constant {
+        return Some(constant_depth(&q, n));
+    }
+    if switched(&q, n) {
+        let before = u128::from(prev.depth.max(0).unsigned_abs());
+        return Some(clamp(&q, n, before.saturating_add(q.dmin), Rule::G76DepthMin));
+    }
+    Some(sqrt_depth(&q, n))
+}
+
+/// The number of rough passes, or `None` when it exceeds `limit` (PRJ.MAXPASS). At most
+/// `limit + 1` steps of the schedule are taken.
+pub fn rough_pass_count(p: &ScheduleParams, limit: u32) -> Option<u32> {
+    let mut r = first(p);
+    let mut count = 1u32;
+    loop {
+        if count > limit {
+            return None;
+        }
+        if r.last {
+            return Some(count);
+        }
+        r = next(p, &r)?;
+        count = count.checked_add(1)?;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use std::vec::Vec;
+
+    fn all(p: &ScheduleParams) -> Vec<Rough> {
+        let mut v = Vec::new();
+        let mut r = first(p);
+        loop {
+            v.push(r);
+            match next(p, &r) {
+                Some(n) => r = n,
+                None => break,
+            }
+            assert!(v.len() < 1_000_000);
+        }
+        v
+    }
+
+    fn depths(p: &ScheduleParams) -> Vec<i64> {
+        all(p).iter().map(|r| r.depth).collect()
+    }
+
+    /// F76.EX1: Δd = 0.7, Δdmin = 0.1, k − d = 2.4 − 0.1 = 2.3 (µm).
+    #[test]
+    fn f76_ex1() {
+        let p = ScheduleParams { first_cut: 700, min_cut: 100, target: 2300, constant: false };
+        assert_eq!(depths(&p), [700, 990, 1212, 1400, 1565, 1715, 1852, 1980, 2100, 2214, 2300]);
+        let rs = all(&p);
+        assert!(rs[..10].iter().all(|r| r.rule == Rule::G76Depth1 && !r.last));
+        assert_eq!((rs[10].n, rs[10].last, rs[10].rule), (11, true, Rule::G76DepthLast));
+        assert_eq!(rough_pass_count(&p, 10_000), Some(11));
+        assert_eq!(rough_pass_count(&p, 11), Some(11));
+        assert_eq!(rough_pass_count(&p, 10), None);
+    }
+
+    /// G76.EXAMPLE: Δd = 1.8, Δdmin = 0.15, k − d = 3 − 0.5 = 2.5 mm.
+    #[test]
+    fn g76_example() {
+        let p = ScheduleParams { first_cut: 1800, min_cut: 150, target: 2500, constant: false };
+        // √2·1.8 = 2.5456 ≥ 2.5: clamped at pass 2.
+        assert_eq!(depths(&p), [1800, 2500]);
+    }
+
+    /// G76.DEPTH.MIN: Δd = 1, Δdmin = 0.3. (√n − √(n−1)) < 0.3 first at n = 4
+    /// (√4 − √3 = 0.268); from then each cut is 0.3 from √3 = 1.732.
+    #[test]
+    fn switch_to_minimum() {
+        let p = ScheduleParams { first_cut: 1000, min_cut: 300, target: 3000, constant: false };
+        let rs = all(&p);
+        let d: Vec<i64> = rs.iter().map(|r| r.depth).collect();
+        assert_eq!(d, [1000, 1414, 1732, 2032, 2332, 2632, 2932, 3000]);
+        assert_eq!(rs[2].rule, Rule::G76Depth1);
+        assert_eq!(rs[3].rule, Rule::G76DepthMin);
+        assert_eq!(rs[7].rule, Rule::G76DepthLast);
+    }
+
+    /// Boundary of the switch: (√n − √(n−1))·Δd = Δdmin exactly is not a switch (strict <).
+    /// Δd = 2, Δdmin = 2(√2 − 1) is irrational; use n = 1: Δd = Δdmin is no switch.
+    #[test]
+    fn equal_first_cut_and_minimum() {
+        let p = ScheduleParams { first_cut: 500, min_cut: 500, target: 10_000, constant: false };
+        let rs = all(&p);
+        assert_eq!(rs[0].rule, Rule::G76Depth1);
+        // n = 2: (√2 − 1)·500 = 207 < 500: switch, depth = 500 + 500.
+        assert_eq!(rs[1].depth, 1000);
+        assert_eq!(rs[1].rule, Rule::G76DepthMin);
+        assert_eq!(rs.last().unwrap().depth, 10_000);
+        assert_eq!(rs.len(), 20);
+        // Δd < Δdmin: minimum from the first pass.
+        let p = ScheduleParams { first_cut: 100, min_cut: 300, target: 1000, constant: false };
+        assert_eq!(depths(&p), [300, 600, 900, 1000]);
+        assert_eq!(first(&p).rule, Rule::G76DepthMin);
+    }
+
+    /// Δdmin = 0: no minimum, the depths follow √n·Δd to the target.
+    #[test]
+    fn no_minimum() {
+        let p = ScheduleParams { first_cut: 10, min_cut: 0, target: 100, constant: false };
+        let d = depths(&p);
+        // round(10·√n) ≥ 100 first at n = 100 (n = 99: 99.499 → 99).
+        assert_eq!(d.len(), 100);
+        assert_eq!(d[98], 99);
+        assert_eq!(d[99], 100);
+        assert!(d.windows(2).all(|w| w[0] <= w[1]));
+        // The pass count grows as (T/Δd)²: bounded by the limit.
+        let p = ScheduleParams { first_cut: 1, min_cut: 0, target: 999_999_999, constant: false };
+        assert_eq!(rough_pass_count(&p, 10_000), None);
+        assert_eq!(rough_pass_count(&p, 0), None);
+    }
+
+    /// The k − d comparison is made on the rounded depth: 0.7·√10.796 … rounds to T.
+    #[test]
+    fn rounded_depth_reaching_target_is_last() {
+        // Δd = 1000, n = 2: √2·1000 = 1414.21 → 1414. T = 1414: pass 2 is last at 1414.
+        let p = ScheduleParams { first_cut: 1000, min_cut: 0, target: 1414, constant: false };
+        assert_eq!(depths(&p), [1000, 1414]);
+        assert!(all(&p)[1].last);
+        // T = 1415: 1414 < 1415, pass 3 (1732) clamps.
+        let p = ScheduleParams { target: 1415, ..p };
+        assert_eq!(depths(&p), [1000, 1414, 1415]);
+        // √n·Δd = 1414.5 exactly cannot happen; half up: 0.5·√... use Δd = 1, n = 2: 1.414 → 1.
+        let p = ScheduleParams { first_cut: 1, min_cut: 0, target: 5, constant: false };
+        assert_eq!(depths(&p), [1, 1, 2, 2, 2, 2, 3, 3, 3, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4, 5]);
+    }
+
+    /// G78.DEPTHMODE 0: n·Δd, the last clamped.
+    #[test]
+    fn constant_mode() {
+        let p = ScheduleParams { first_cut: 400, min_cut: 80, target: 1250, constant: true };
+        assert_eq!(depths(&p), [400, 800, 1200, 1250]);
+        let rs = all(&p);
+        assert_eq!(rs[0].rule, Rule::G78DepthMode);
+        assert_eq!(rs[3].rule, Rule::G76DepthLast);
+        let p = ScheduleParams { first_cut: 400, min_cut: 80, target: 1200, constant: true };
+        assert_eq!(depths(&p), [400, 800, 1200]);
+        assert_eq!(rough_pass_count(&p, 3), Some(3));
+        assert_eq!(rough_pass_count(&p, 2), None);
+    }
+
+    /// A first cut at or beyond the target is the only rough pass.
+    #[test]
+    fn single_pass() {
+        for constant in [false, true] {
+            let p = ScheduleParams { first_cut: 5000, min_cut: 100, target: 1, constant };
+            let r = first(&p);
+            assert_eq!((r.n, r.depth, r.last), (1, 1, true));
+            assert_eq!(next(&p, &r), None);
+            assert_eq!(rough_pass_count(&p, 1), Some(1));
+            assert_eq!(rough_pass_count(&p, 0), None);
+        }
+    }
+
+    /// Brute-force cross-check against a direct reading of the register on small values:
+    /// the switch pass found by exact comparison of squares, then the depth formula.
+    #[test]
+    fn matches_direct_formula() {
+        fn direct(dd: i64, dmin: i64, t: i64) -> Vec<i64> {
+            let (dd, dmin, t) = (dd as i128, dmin as i128, t as i128);
+            let isqrt_round = |n: i128| -> i128 {
+                let mut r = 0i128;
+                while (r + 1) * (r + 1) <= n {
+                    r += 1;
+                }
+                if n - r * r > r { r + 1 } else { r }
+            };
+            let mut s: Option<i128> = None;
+            let mut out = Vec::new();
+            let mut n = 1i128;
+            loop {
+                if s.is_none() {
+                    let a = dd * dd - dmin * dmin;
+                    if dmin > 0 && (a < 0 || a * a < 4 * dd * dd * dmin * dmin * (n - 1)) {
+                        s = Some(n);
+                    }
+                }
+                let d = match s {
+                    None => isqrt_round(n * dd * dd),
+                    Some(s) => isqrt_round((s - 1) * dd * dd) + (n - s + 1) * dmin,
+                };
+                if d >= t {
+                    out.push(t as i64);
+                    return out;
+                }
+                out.push(d as i64);
+                n += 1;
+            }
+        }
+        for dd in 1..=12 {
+            for dmin in 0..=12 {
+                for t in 1..=60 {
+                    let p = ScheduleParams { first_cut: dd, min_cut: dmin, target: t, constant: false };
+                    let got = depths(&p);
+                    assert_eq!(got, direct(dd, dmin, t), "dd {dd} dmin {dmin} t {t}");
+                    if dmin >= 1 {
+                        assert!(got.windows(2).all(|w| w[0] < w[1]));
+                    }
+                    let count = u32::try_from(got.len()).unwrap();
+                    assert_eq!(rough_pass_count(&p, count), Some(count));
+                    assert_eq!(rough_pass_count(&p, count - 1), None);
+                }
+            }
+        }
+    }
+
+    /// Extreme values: total, no panic, ends at the target.
+    #[test]
+    fn extremes() {
+        for (dd, dmin, t) in [
+            (i64::MAX, i64::MAX, i64::MAX),
+            (1, i64::MAX, i64::MAX),
+            (i64::MAX, 1, i64::MAX),
+            (1, 1, i64::MAX),
+            (i64::MIN, i64::MIN, i64::MIN),
+            (999_999_999, 999_999_999, 999_999_999),
+            (1, 0, 999_999_999),
+        ] {
+            for constant in [false, true] {
+                let p = ScheduleParams { first_cut: dd, min_cut: dmin, target: t, constant };
+                let _ = rough_pass_count(&p, 1000);
+                let mut r = first(&p);
+                for _ in 0..1000 {
+                    match next(&p, &r) {
+                        Some(n) => {
+                            assert!(n.depth >= r.depth);
+                            r = n;
+                        }
+                        None => break,
+                    }
+                }
+            }
+        }
+        let p = ScheduleParams { first_cut: 1, min_cut: 0, target: 10, constant: false };
+        let r = Rough { n: u32::MAX, depth: 5, last: false, rule: Rule::G76Depth1 };
+        assert_eq!(next(&p, &r), None);
+    }
+}
