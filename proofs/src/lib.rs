@@ -1,0 +1,10 @@
+//! Proof harnesses for the production expander (`cycle-impl`).
+//!
+//! Each harness is one generic body over a [`source::Source`], used three ways: a Kani proof
+//! (`#[kani::proof]`, symbolic values, run by vendors with `cargo kani`), a bounded-exhaustive
+//! test and a random test (both under `cargo test`, so CI executes every body). See
+//! `proofs/README.md` for the properties, bounds and commands.
+#![forbid(unsafe_code)]
+
+pub mod program;
+pub mod source;
