@@ -1,1 +1,24 @@
-//! Oracle (in progress).
+//! The oracle of the lathe canned-cycle reference: the engines behind one trait
+//! ([`engine`]), the conformance relation and trace diff ([`conformance`]), the rule catalogue as
+//! data ([`catalogue`]), the built-in corpus of the manuals' programs ([`corpus`]), proptest
+//! generators of programs and configurations ([`gen`]), and differential campaigns
+//! ([`campaign`]). The `cyclecheck` binary is a thin CLI over these.
+//!
+//! ```
+//! use cycle_oracle::engine::{Engine, SpecEngine};
+//! use cycle_vocab::Config;
+//! let trace = SpecEngine.expand(b"G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\n", &Config::default());
+//! assert!(trace.to_gcode().contains("G32 X58.700 Z-27.000 F3.0000"));
+//! assert_eq!(cycle_oracle::conformance::check(&trace, &trace.clone()), Ok(()));
+//! ```
+#![forbid(unsafe_code)]
+
+pub mod campaign;
+pub mod catalogue;
+pub mod conformance;
+pub mod corpus;
+pub mod engine;
+pub mod gen;
+
+pub use conformance::{check, Divergence, DivergenceKind};
+pub use engine::{Engine, ImplEngine, SpecEngine};

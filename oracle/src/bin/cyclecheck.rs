@@ -1,1 +1,392 @@
-fn main() {}
+//! `cyclecheck`: expand a program with either engine, diff the engines on one program, or run
+//! the built-in corpus through both. See the README ("The CLI") for the promised behaviour.
+//!
+//! Exit codes: 0 success / the engines conform; 1 the engines diverge (`diff`, `corpus`);
+//! 2 an alarm or bad input — the alarm, naming its code, word, rule and line, goes to stderr.
+
+use cycle_oracle::campaign::{self, Verdict};
+use cycle_oracle::conformance::{self, alarm_summary};
+use cycle_oracle::corpus;
+use cycle_oracle::engine::{self, ImplEngine, SpecEngine};
+use cycle_vocab::params::MAX_LENGTH;
+use cycle_vocab::text::Trace;
+use cycle_vocab::{Config, Dialect, Grid, Increment, Units};
+use std::process::ExitCode;
+
+const USAGE: &str = "\
+usage:
+  cyclecheck expand FILE [--engine spec|impl] [--format gcode|json] [OPTIONS]
+  cyclecheck diff FILE [--format gcode|json] [OPTIONS]      spec vs impl
+  cyclecheck corpus [--format text|json]                    every built-in example, spec vs impl
+options:
+  --dialect gsk|fanuc       input conventions (default gsk)
+  --units metric|inch       (default metric)
+  --increment isb|isc       least increment (default isb)
+  --param N=V               machine parameter: 19, 107, 18, 5130, 5131, 5140..5145, max_passes
+  --start-x X --start-z Z   machine position at program start, mm or inch (default 0 0)
+exit: 0 ok / conform, 1 the engines diverge, 2 an alarm or bad input";
+
+/// `writeln!` into the output buffer (a `String` cannot fail).
+macro_rules! outln {
+    ($out:ident, $($arg:tt)*) => {{
+        use std::fmt::Write as _;
+        let _ = writeln!($out, $($arg)*);
+    }};
+}
+
+/// `write!` into the output buffer.
+macro_rules! outp {
+    ($out:ident, $($arg:tt)*) => {{
+        use std::fmt::Write as _;
+        let _ = write!($out, $($arg)*);
+    }};
+}
+
+/// Writes the output to stdout at once; a closed pipe (`cyclecheck corpus | head`) is not an
+/// error worth a panic.
+fn emit(text: &str) {
+    use std::io::Write as _;
+    let mut stdout = std::io::stdout().lock();
+    let _ = stdout.write_all(text.as_bytes()).and_then(|()| stdout.flush());
+}
+
+/// Bad input: a message for stderr, exit 2.
+struct Bad(String);
+
+fn bad<T>(msg: impl Into<String>) -> Result<T, Bad> {
+    Err(Bad(msg.into()))
+}
+
+/// The options of `expand` and `diff`; each takes a value.
+const OPTIONS: &[&str] =
+    &["--engine", "--format", "--dialect", "--units", "--increment", "--param", "--start-x", "--start-z"];
+
+/// The parsed command line of `expand` and `diff`.
+struct Options {
+    file: Option<String>,
+    engine: Option<String>,
+    format: Option<String>,
+    config: Config,
+    start: (Option<String>, Option<String>),
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match run(&args) {
+        Ok(code) => ExitCode::from(code),
+        Err(Bad(msg)) => {
+            eprintln!("cyclecheck: {msg}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn run(args: &[String]) -> Result<u8, Bad> {
+    let Some(command) = args.first() else {
+        return bad(format!("no command\n{USAGE}"));
+    };
+    let rest = &args[1..];
+    match command.as_str() {
+        "-h" | "--help" | "help" => {
+            emit(&format!("{USAGE}\n"));
+            Ok(0)
+        }
+        "expand" => expand(parse(rest, true)?),
+        "diff" => diff(parse(rest, false)?),
+        "corpus" => corpus_command(rest),
+        other => bad(format!("unknown command {other:?}\n{USAGE}")),
+    }
+}
+
+/// Splits `--name=value` or takes the value from the next argument.
+fn option_value<'a>(arg: &'a str, it: &mut impl Iterator<Item = &'a String>) -> Result<(&'a str, &'a str), Bad> {
+    if let Some((name, value)) = arg.split_once('=') {
+        return Ok((name, value));
+    }
+    match it.next() {
+        Some(v) => Ok((arg, v.as_str())),
+        None => bad(format!("{arg} needs a value")),
+    }
+}
+
+fn parse(args: &[String], allow_engine: bool) -> Result<Options, Bad> {
+    let mut o = Options { file: None, engine: None, format: None, config: Config::default(), start: (None, None) };
+    let mut units = Units::Metric;
+    let mut increment = Increment::Isb;
+    let mut it = args.iter();
+    while let Some(arg) = it.next() {
+        if !arg.starts_with("--") {
+            if o.file.replace(arg.clone()).is_some() {
+                return bad(format!("one FILE only (also got {arg:?})"));
+            }
+            continue;
+        }
+        let name = arg.split_once('=').map_or(arg.as_str(), |(n, _)| n);
+        if name == "--help" {
+            return bad(USAGE);
+        }
+        if !OPTIONS.contains(&name) {
+            return bad(format!("unknown option {name:?}\n{USAGE}"));
+        }
+        let (name, value) = option_value(arg, &mut it)?;
+        match name {
+            "--engine" if allow_engine => match value {
+                "spec" | "impl" => o.engine = Some(value.to_string()),
+                _ => return bad(format!("--engine takes spec or impl, not {value:?}")),
+            },
+            "--engine" => return bad("diff compares spec and impl; it takes no --engine"),
+            "--format" => match value {
+                "gcode" | "json" => o.format = Some(value.to_string()),
+                _ => return bad(format!("--format takes gcode or json, not {value:?}")),
+            },
+            "--dialect" => {
+                o.config.dialect = match value {
+                    "gsk" => Dialect::Gsk,
+                    "fanuc" => Dialect::Fanuc,
+                    _ => return bad(format!("--dialect takes gsk or fanuc, not {value:?}")),
+                }
+            }
+            "--units" => {
+                units = match value {
+                    "metric" => Units::Metric,
+                    "inch" => Units::Inch,
+                    _ => return bad(format!("--units takes metric or inch, not {value:?}")),
+                }
+            }
+            "--increment" => {
+                increment = match value {
+                    "isb" => Increment::Isb,
+                    "isc" => Increment::Isc,
+                    _ => return bad(format!("--increment takes isb or isc, not {value:?}")),
+                }
+            }
+            "--param" => {
+                let Some((n, v)) = value.split_once('=') else {
+                    return bad(format!("--param takes N=V, not {value:?}"));
+                };
+                let Ok(v) = v.trim().parse::<i64>() else {
+                    return bad(format!("--param {n}: {v:?} is not an integer"));
+                };
+                if let Err(e) = o.config.params.set(n.trim(), v) {
+                    return bad(format!("--param {n}={v}: {e}"));
+                }
+            }
+            "--start-x" => o.start.0 = Some(value.to_string()),
+            "--start-z" => o.start.1 = Some(value.to_string()),
+            _ => return bad(format!("unknown option {name:?}\n{USAGE}")),
+        }
+    }
+    o.config.grid = Grid { units, increment };
+    let decimals = o.config.grid.decimals();
+    if let Some(x) = &o.start.0 {
+        o.config.start_x = grid_value(x, decimals).map_err(|e| Bad(format!("--start-x {x:?}: {e}")))?;
+    }
+    if let Some(z) = &o.start.1 {
+        o.config.start_z = grid_value(z, decimals).map_err(|e| Bad(format!("--start-z {z:?}: {e}")))?;
+    }
+    Ok(o)
+}
+
+/// A decimal in mm (inch) as a count of the least increment: exact, within ±N.
+fn grid_value(text: &str, decimals: u32) -> Result<i64, String> {
+    let (negative, digits) = match text.as_bytes().first() {
+        Some(b'-') => (true, &text[1..]),
+        Some(b'+') => (false, &text[1..]),
+        _ => (false, text),
+    };
+    let (int, frac) = digits.split_once('.').unwrap_or((digits, ""));
+    let all_digits = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
+    if int.is_empty() && frac.is_empty() || !all_digits(int) || !all_digits(frac) {
+        return Err("not a decimal number".to_string());
+    }
+    let frac = frac.trim_end_matches('0');
+    if frac.len() > decimals as usize {
+        return Err(format!("more than {decimals} decimals (the least increment)"));
+    }
+    let too_large = || format!("outside ±{}", cycle_vocab::text::fixed(MAX_LENGTH, decimals));
+    let int = int.trim_start_matches('0');
+    if int.len() > 18 {
+        return Err(too_large());
+    }
+    let int: i64 = if int.is_empty() { 0 } else { int.parse().map_err(|_| too_large())? };
+    let frac_count: i64 = if frac.is_empty() { 0 } else { frac.parse::<i64>().map_err(|_| too_large())? };
+    let scale = 10i64.pow(decimals);
+    let count = int
+        .checked_mul(scale)
+        .and_then(|v| v.checked_add(frac_count * 10i64.pow(decimals - frac.len() as u32)))
+        .filter(|v| *v <= MAX_LENGTH)
+        .ok_or_else(too_large)?;
+    Ok(if negative { -count } else { count })
+}
+
+fn read_program(o: &Options) -> Result<Vec<u8>, Bad> {
+    let Some(file) = &o.file else {
+        return bad(format!("no FILE given\n{USAGE}"));
+    };
+    std::fs::read(file).map_err(|e| Bad(format!("cannot read {file}: {e}")))
+}
+
+fn expand(o: Options) -> Result<u8, Bad> {
+    let program = read_program(&o)?;
+    let name = o.engine.as_deref().unwrap_or("spec");
+    let engine = engine::by_name(name).expect("engine names are checked when parsing");
+    let trace = engine.expand(&program, &o.config);
+    let mut out = String::new();
+    match o.format.as_deref() {
+        Some("json") => outln!(out, "{}", trace.to_json()),
+        _ => outp!(out, "{}", trace.to_gcode()),
+    }
+    emit(&out);
+    Ok(report_alarm(&trace))
+}
+
+/// Names the trace's alarm on stderr: 2 when there is one, else 0.
+fn report_alarm(trace: &Trace) -> u8 {
+    match &trace.alarm {
+        Some(a) => {
+            eprintln!("{}", alarm_summary(a));
+            2
+        }
+        None => 0,
+    }
+}
+
+fn diff(o: Options) -> Result<u8, Bad> {
+    let program = read_program(&o)?;
+    let (spec, imp) = (SpecEngine, ImplEngine::default());
+    let (reference, verdict) = campaign::judge((&spec, &imp), &program, &o.config);
+    let json = o.format.as_deref() == Some("json");
+    let mut out = String::new();
+    let code = match verdict {
+        Verdict::Diverge(d) => {
+            if json {
+                outln!(out, "{}", serde_json::json!({"conform": false, "divergence": conformance::to_json(&d)}));
+            } else {
+                outln!(out, "{d}");
+            }
+            1
+        }
+        Verdict::Panic { engine, message } => {
+            if json {
+                outln!(out, "{}", serde_json::json!({"conform": false, "panic": {"engine": engine, "message": message}}));
+            } else {
+                outln!(out, "PANIC in the {engine} engine: {message}");
+            }
+            1
+        }
+        Verdict::Conform(_) => {
+            let trace = reference.expect("a conforming case has a reference trace");
+            if json {
+                outln!(out, "{}", serde_json::json!({"conform": true, "events": trace.events.len(), "alarm": trace.alarm}));
+            } else {
+                match &trace.alarm {
+                    None => outln!(out, "conform: {} events", trace.events.len()),
+                    Some(a) => {
+                        outln!(out, "conform: {} events, then {}", trace.events.len(), Trace::alarm_line(a))
+                    }
+                }
+            }
+            emit(&out);
+            out.clear();
+            report_alarm(&trace)
+        }
+    };
+    emit(&out);
+    Ok(code)
+}
+
+fn corpus_command(args: &[String]) -> Result<u8, Bad> {
+    let mut json = false;
+    let mut it = args.iter();
+    while let Some(arg) = it.next() {
+        let (name, value) = if arg.starts_with("--") { option_value(arg, &mut it)? } else { (arg.as_str(), "") };
+        match (name, value) {
+            ("--format", "text") => json = false,
+            ("--format", "json") => json = true,
+            ("--format", v) => return bad(format!("--format of corpus takes text or json, not {v:?}")),
+            _ => return bad(format!("corpus takes only --format, not {arg:?}\n{USAGE}")),
+        }
+    }
+    let (spec, imp) = (SpecEngine, ImplEngine::default());
+    let report = campaign::run((&spec, &imp), corpus::cases());
+    let mut out = String::new();
+    if json {
+        let programs: Vec<_> = report
+            .outcomes
+            .iter()
+            .zip(corpus::PROGRAMS)
+            .map(|(o, p)| {
+                let divergence = match &o.verdict {
+                    Verdict::Diverge(d) => Some(conformance::to_json(d)),
+                    _ => None,
+                };
+                let alarm = match &o.verdict {
+                    Verdict::Conform(a) => a.as_ref().map(alarm_summary),
+                    _ => None,
+                };
+                serde_json::json!({
+                    "name": o.name,
+                    "path": p.path,
+                    "dialect": p.config().dialect,
+                    "units": p.config().grid.units,
+                    "rules": p.rules.iter().map(|r| r.id()).collect::<Vec<_>>(),
+                    "events": o.events,
+                    "passes": o.passes,
+                    "conform": o.verdict.conforms(),
+                    "result": o.verdict.short(),
+                    "alarm": alarm,
+                    "divergence": divergence,
+                })
+            })
+            .collect();
+        let doc = serde_json::json!({
+            "reference": report.engines.0,
+            "candidate": report.engines.1,
+            "programs": programs,
+            "summary": {"programs": report.cases(), "conform": report.conforming(), "diverge": report.cases() - report.conforming()},
+        });
+        outln!(out, "{}", serde_json::to_string_pretty(&doc).expect("JSON values serialize"));
+    } else {
+        let width = corpus::PROGRAMS.iter().map(|p| p.name.len()).max().unwrap_or(0);
+        for o in &report.outcomes {
+            outln!(out, "{:width$}  {:>6} events  {:>4} passes  {}", o.name, o.events, o.passes, o.verdict.short());
+        }
+        for f in &report.findings {
+            outln!(out, "\n{}: {}", f.name, corpus::find(&f.name).map_or("", |p| p.path));
+            match &f.verdict {
+                Verdict::Diverge(d) => outln!(out, "{d}"),
+                Verdict::Panic { engine, message } => outln!(out, "PANIC in the {engine} engine: {message}"),
+                Verdict::Conform(_) => {}
+            }
+        }
+        outln!(out, 
+            "\n{} programs: {} conform, {} diverge ({} vs {})",
+            report.cases(),
+            report.conforming(),
+            report.cases() - report.conforming(),
+            report.engines.0,
+            report.engines.1
+        );
+    }
+    emit(&out);
+    Ok(if report.all_conform() { 0 } else { 1 })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::grid_value;
+
+    #[test]
+    fn start_values_on_the_grid() {
+        assert_eq!(grid_value("65", 3), Ok(65_000));
+        assert_eq!(grid_value("-28.5", 3), Ok(-28_500));
+        assert_eq!(grid_value("+.5", 4), Ok(5_000));
+        assert_eq!(grid_value("1.2500", 3), Ok(1_250));
+        assert_eq!(grid_value("999999.999", 3), Ok(999_999_999));
+        assert!(grid_value("1000000", 3).is_err());
+        assert!(grid_value("1.0001", 3).is_err());
+        for bad in ["", ".", "-", "1e3", "1.2.3", "x", "99999999999999999999999"] {
+            assert!(grid_value(bad, 3).is_err(), "{bad:?}");
+        }
+    }
+}

@@ -1,0 +1,288 @@
+//! Differential campaigns: many programs through two engines, the first as the reference, each
+//! pair of traces judged by the conformance relation ([`crate::conformance::check`]).
+//!
+//! A campaign never stops at a divergence: it records every case's outcome, counts cases per
+//! cycle and per ending (clean or which alarm), and keeps each divergent case whole (name,
+//! program, configuration, divergence) for the report. An engine that panics is recorded as
+//! such, not propagated.
+
+use crate::conformance::{self, alarm_short, Divergence};
+use crate::engine::Engine;
+use cycle_vocab::text::Trace;
+use cycle_vocab::{Alarm, Blocks, Config, Dialect, Event};
+use std::collections::BTreeMap;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+/// How a case ended.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// The candidate conforms; the reference's alarm, if it ended in one.
+    Conform(Option<Alarm>),
+    /// The first divergence.
+    Diverge(Box<Divergence>),
+    /// An engine panicked (never acceptable: both promise not to).
+    Panic { engine: String, message: String },
+}
+
+impl Verdict {
+    /// One-line form: `conform`, `conform (alarm 2002 P G78.MODE)`, `DIVERGE (…)`, `PANIC (…)`.
+    pub fn short(&self) -> String {
+        match self {
+            Verdict::Conform(None) => "conform".to_string(),
+            Verdict::Conform(Some(a)) => format!("conform ({})", alarm_short(a)),
+            Verdict::Diverge(d) => {
+                let field = d.field.map(|f| format!(", field {f}")).unwrap_or_default();
+                format!("DIVERGE ({} at event {}{field})", d.kind, d.index)
+            }
+            Verdict::Panic { engine, .. } => format!("PANIC ({engine})"),
+        }
+    }
+
+    pub fn conforms(&self) -> bool {
+        matches!(self, Verdict::Conform(_))
+    }
+}
+
+/// One case of a campaign.
+#[derive(Clone, Debug)]
+pub struct Outcome {
+    pub name: String,
+    /// The cycle the program exercises (see [`cycle_of`]).
+    pub cycle: &'static str,
+    /// Events and pass headers of the reference trace.
+    pub events: usize,
+    pub passes: usize,
+    pub verdict: Verdict,
+}
+
+/// A case that did not conform, kept whole.
+#[derive(Clone, Debug)]
+pub struct Finding {
+    pub name: String,
+    pub program: Vec<u8>,
+    pub config: Config,
+    pub verdict: Verdict,
+}
+
+impl std::fmt::Display for Finding {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        writeln!(f, "case {} ({:?}, {:?})", self.name, self.config.dialect, self.config.grid)?;
+        match &self.verdict {
+            Verdict::Diverge(d) => writeln!(f, "{d}")?,
+            Verdict::Panic { engine, message } => writeln!(f, "PANIC in {engine}: {message}")?,
+            Verdict::Conform(_) => writeln!(f, "conform")?,
+        }
+        writeln!(f, "program:")?;
+        f.write_str(&String::from_utf8_lossy(&self.program))
+    }
+}
+
+/// The result of a campaign.
+#[derive(Clone, Debug, Default)]
+pub struct Report {
+    /// The engines' names: reference, candidate.
+    pub engines: (String, String),
+    /// Every case, in order.
+    pub outcomes: Vec<Outcome>,
+    /// Cases per cycle (`G92`, `G76`, `G76 fanuc`, `G78`, `none`).
+    pub by_cycle: BTreeMap<&'static str, usize>,
+    /// Cases per ending of the reference trace: `clean` or `alarm 2002 P G78.MODE`.
+    pub by_ending: BTreeMap<String, usize>,
+    /// The cases that diverged or panicked.
+    pub findings: Vec<Finding>,
+}
+
+impl Report {
+    pub fn cases(&self) -> usize {
+        self.outcomes.len()
+    }
+
+    pub fn conforming(&self) -> usize {
+        self.outcomes.iter().filter(|o| o.verdict.conforms()).count()
+    }
+
+    /// Whether every case conformed.
+    pub fn all_conform(&self) -> bool {
+        self.findings.is_empty()
+    }
+
+    /// The divergences found, with their cases.
+    pub fn divergences(&self) -> impl Iterator<Item = (&Finding, &Divergence)> {
+        self.findings.iter().filter_map(|f| match &f.verdict {
+            Verdict::Diverge(d) => Some((f, &**d)),
+            _ => None,
+        })
+    }
+
+    /// One-paragraph summary: counts, per cycle, per ending.
+    pub fn summary(&self) -> String {
+        let mut s = format!(
+            "{} vs {}: {} cases, {} conform, {} diverge",
+            self.engines.0,
+            self.engines.1,
+            self.cases(),
+            self.conforming(),
+            self.cases() - self.conforming()
+        );
+        let join = |m: Vec<(String, usize)>| m.into_iter().map(|(k, v)| format!("{k} {v}")).collect::<Vec<_>>().join(", ");
+        s.push_str(&format!(
+            "\n  by cycle: {}",
+            join(self.by_cycle.iter().map(|(k, v)| (k.to_string(), *v)).collect())
+        ));
+        s.push_str(&format!("\n  by ending: {}", join(self.by_ending.iter().map(|(k, v)| (k.clone(), *v)).collect())));
+        s
+    }
+}
+
+/// The cycle a program exercises: the first cycle code (G92, G76, G78) of its blocks, read
+/// with the shared lexer up to its first lexical alarm; `none` when there is none.
+pub fn cycle_of(program: &[u8], config: &Config) -> &'static str {
+    for block in Blocks::new(program) {
+        let Ok(block) = block else { break };
+        for g in block.g_codes() {
+            if g.point || g.negative {
+                continue;
+            }
+            match (g.mantissa, config.dialect) {
+                (92, _) => return "G92",
+                (76, Dialect::Fanuc) => return "G76 fanuc",
+                (76, Dialect::Gsk) => return "G76",
+                (78, _) => return "G78",
+                _ => {}
+            }
+        }
+    }
+    "none"
+}
+
+fn panic_message(p: Box<dyn std::any::Any + Send>) -> String {
+    match p.downcast::<String>() {
+        Ok(s) => *s,
+        Err(p) => p.downcast_ref::<&str>().map_or_else(|| "panic".to_string(), |s| s.to_string()),
+    }
+}
+
+fn expand(engine: &dyn Engine, program: &[u8], config: &Config) -> Result<Trace, Verdict> {
+    catch_unwind(AssertUnwindSafe(|| engine.expand(program, config)))
+        .map_err(|p| Verdict::Panic { engine: engine.name().to_string(), message: panic_message(p) })
+}
+
+/// Runs one case: both engines, then the relation.
+pub fn judge(engines: (&dyn Engine, &dyn Engine), program: &[u8], config: &Config) -> (Option<Trace>, Verdict) {
+    let reference = match expand(engines.0, program, config) {
+        Ok(t) => t,
+        Err(v) => return (None, v),
+    };
+    let verdict = match expand(engines.1, program, config) {
+        Err(v) => v,
+        Ok(candidate) => match conformance::check(&reference, &candidate) {
+            Ok(()) => Verdict::Conform(reference.alarm),
+            Err(d) => Verdict::Diverge(Box::new(d)),
+        },
+    };
+    (Some(reference), verdict)
+}
+
+/// Runs every case through both engines (`engines.0` the reference) and collects the report.
+pub fn run(engines: (&dyn Engine, &dyn Engine), cases: impl Iterator<Item = (String, Vec<u8>, Config)>) -> Report {
+    let mut report = Report { engines: (engines.0.name().to_string(), engines.1.name().to_string()), ..Report::default() };
+    for (name, program, config) in cases {
+        let cycle = cycle_of(&program, &config);
+        let (reference, verdict) = judge(engines, &program, &config);
+        let (events, passes) = reference.as_ref().map_or((0, 0), |t| {
+            (t.events.len(), t.events.iter().filter(|e| matches!(e, Event::Pass(_))).count())
+        });
+        *report.by_cycle.entry(cycle).or_default() += 1;
+        let ending = match reference.as_ref().map(|t| t.alarm) {
+            Some(None) => "clean".to_string(),
+            Some(Some(a)) => alarm_short(&a),
+            None => "reference panicked".to_string(),
+        };
+        *report.by_ending.entry(ending).or_default() += 1;
+        if !verdict.conforms() {
+            report.findings.push(Finding { name: name.clone(), program, config, verdict: verdict.clone() });
+        }
+        report.outcomes.push(Outcome { name, cycle, events, passes, verdict });
+    }
+    report
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::conformance::DivergenceKind;
+    use crate::engine::SpecEngine;
+
+    /// The spec with every X one increment off after the first event: a wrong candidate.
+    struct OffByOne;
+    impl Engine for OffByOne {
+        fn name(&self) -> &str {
+            "off-by-one"
+        }
+        fn expand(&self, program: &[u8], config: &Config) -> Trace {
+            let mut t = cycle_spec::expand(program, config);
+            for e in t.events.iter_mut().skip(1) {
+                if let Event::Move(m) = e {
+                    m.x += 1;
+                }
+            }
+            t
+        }
+    }
+
+    struct Panics;
+    impl Engine for Panics {
+        fn name(&self) -> &str {
+            "panics"
+        }
+        fn expand(&self, _: &[u8], _: &Config) -> Trace {
+            panic!("boom")
+        }
+    }
+
+    #[test]
+    fn spec_against_itself_conforms_on_the_corpus() {
+        let r = run((&SpecEngine, &SpecEngine), crate::corpus::cases());
+        assert_eq!(r.cases(), crate::corpus::PROGRAMS.len());
+        assert!(r.all_conform(), "{}", r.summary());
+        assert_eq!(r.conforming(), r.cases());
+        assert_eq!(r.by_ending.get("alarm 2002 P G78.MODE"), Some(&1), "{}", r.summary());
+        assert_eq!(r.by_cycle.get("G78"), Some(&7), "{}", r.summary());
+        assert_eq!(r.by_cycle.get("G76 fanuc"), Some(&1), "{}", r.summary());
+        let g92 = r.outcomes.iter().find(|o| o.name == "g92_example").unwrap();
+        assert_eq!((g92.cycle, g92.passes), ("G92", 4));
+        assert_eq!(g92.verdict.short(), "conform");
+        let g78 = r.outcomes.iter().find(|o| o.name == "g78_example").unwrap();
+        assert_eq!(g78.verdict.short(), "conform (alarm 2002 P G78.MODE)");
+    }
+
+    #[test]
+    fn a_wrong_candidate_is_found_on_every_moving_program() {
+        let r = run((&SpecEngine, &OffByOne), crate::corpus::cases());
+        // Every program but the G78 example (one rapid, then its alarm) moves more than once.
+        assert_eq!(r.findings.len(), r.cases() - 1, "{}", r.summary());
+        for (f, d) in r.divergences() {
+            assert_eq!((d.kind, d.field), (DivergenceKind::FieldMismatch, Some("x")), "{}", f.name);
+            assert!(f.to_string().contains("program:\n"), "{f}");
+        }
+        assert!(r.outcomes[0].verdict.short().starts_with("DIVERGE (field mismatch at event "));
+    }
+
+    #[test]
+    fn a_panic_is_a_finding() {
+        let cases = vec![("p".to_string(), b"G0 X1".to_vec(), Config::default())];
+        let r = run((&SpecEngine, &Panics), cases.into_iter());
+        assert_eq!(r.findings.len(), 1);
+        assert!(matches!(&r.findings[0].verdict, Verdict::Panic { engine, message } if engine == "panics" && message == "boom"));
+        assert_eq!(r.outcomes[0].verdict.short(), "PANIC (panics)");
+    }
+
+    #[test]
+    fn cycles_are_named() {
+        let c = Config::default();
+        assert_eq!(cycle_of(b"G0 X1\nG92 X1 Z-1 F1", &c), "G92");
+        assert_eq!(cycle_of(b"G76 P1", &Config { dialect: Dialect::Fanuc, ..c }), "G76 fanuc");
+        assert_eq!(cycle_of(b"G78", &c), "G78");
+        assert_eq!(cycle_of(b"G0 X1 #G92", &c), "none");
+    }
+}

@@ -1,0 +1,164 @@
+//! The built-in corpus: the manuals' example programs (`corpus/*.nc`) and one program per
+//! feature (`tests/programs/*.nc`), compiled in, each with the configuration it runs under and
+//! the rule IDs it illustrates.
+//!
+//! Configurations follow the files' header comments: `f76_ex1_microns` runs under the `fanuc`
+//! dialect (F76.MICRONS), the `*_inch` programs in inch units (they write G20), the rest under
+//! the defaults (gsk, metric, ISB, start X0 Z0). The G78 example as printed has infeed mode 05,
+//! outside 0…4: its expected result is that alarm (G78.MODE), and an engine that raises it
+//! conforms.
+
+use cycle_vocab::{AlarmCode, Config, Dialect, Grid, Increment, Rule, Units};
+
+/// An alarm a corpus program is expected to end in: code, word, rule.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ExpectedAlarm {
+    pub code: AlarmCode,
+    pub word: Option<u8>,
+    pub rule: Rule,
+}
+
+/// One built-in program.
+#[derive(Clone, Copy, Debug)]
+pub struct Program {
+    /// File stem, e.g. `g92_example`.
+    pub name: &'static str,
+    /// Path from the repository root.
+    pub path: &'static str,
+    /// The program text.
+    pub text: &'static str,
+    pub dialect: Dialect,
+    pub units: Units,
+    /// The rule IDs the program illustrates.
+    pub rules: &'static [Rule],
+    /// `Some` when the program is expected to end in this alarm.
+    pub expect_alarm: Option<ExpectedAlarm>,
+}
+
+impl Program {
+    /// The configuration the program runs under.
+    pub fn config(&self) -> Config {
+        Config {
+            dialect: self.dialect,
+            grid: Grid { units: self.units, increment: Increment::Isb },
+            ..Config::default()
+        }
+    }
+}
+
+macro_rules! program {
+    ($dir:literal, $name:literal, $dialect:ident, $units:ident, [$($rule:ident),* $(,)?] $(, alarm $code:ident $word:literal $arule:ident)?) => {
+        Program {
+            name: $name,
+            path: concat!($dir, "/", $name, ".nc"),
+            text: include_str!(concat!("../../", $dir, "/", $name, ".nc")),
+            dialect: Dialect::$dialect,
+            units: Units::$units,
+            rules: &[$(Rule::$rule),*],
+            expect_alarm: program!(@alarm $($code $word $arule)?),
+        }
+    };
+    (@alarm) => { None };
+    (@alarm $code:ident $word:literal $rule:ident) => {
+        Some(ExpectedAlarm { code: AlarmCode::$code, word: Some($word), rule: Rule::$rule })
+    };
+}
+
+/// Every built-in program: the manuals' examples first, then the feature programs.
+pub const PROGRAMS: &[Program] = &[
+    // The manuals' examples (corpus/).
+    program!("corpus", "g92_example", Gsk, Metric, [G92Example, G92Format, G92Modal, G92Path, G92Pullout]),
+    program!("corpus", "g76_example", Gsk, Metric, [G76Example, G76Format, G76Depth1, G76DepthMin, G76DepthLast, G76Finish, G76Pullout, G76Path]),
+    program!("corpus", "g78_example", Gsk, Metric, [G78Example, G78Format, G78Mode], alarm OutOfRange b'P' G78Mode),
+    program!("corpus", "f76_ex1", Gsk, Metric, [F76Ex1, F76Format, G76Depth1, G76DepthLast, G76Finish, G76Pullout]),
+    program!("corpus", "f76_ex1_microns", Fanuc, Metric, [F76Ex1, F76Microns, PrjDialect, F76Format]),
+    program!("corpus", "f76_ex2", Gsk, Metric, [F76Ex2, F76Format, G76Depth1, G76DepthMin, G76DepthLast, G76Finish]),
+    // One program per feature (tests/programs/).
+    program!("tests/programs", "g92_taper", Gsk, Metric, [G92Taper, G92Pullout, G92Modal, ComLongAxis]),
+    program!("tests/programs", "g92_internal", Gsk, Metric, [ComSide, G92Jk1, G92Pullout, G92Modal]),
+    program!("tests/programs", "g92_inch", Gsk, Inch, [ComUnits, ComLead, G92Format]),
+    program!("tests/programs", "g92_multistart", Gsk, Metric, [ComMultiStart, G92Format, G92Modal]),
+    program!("tests/programs", "g76_taper", Gsk, Metric, [G76Format, G76Pullout, G76InfeedX, ComPoints]),
+    program!("tests/programs", "g76_internal", Gsk, Metric, [ComSide, G76InfeedX, G76InfeedZ]),
+    program!("tests/programs", "g76_inch", Gsk, Inch, [ComUnits, ComLead]),
+    program!("tests/programs", "g76_multistart", Gsk, Metric, [ComMultiStart, G76MultiStart, G76LeadIn]),
+    program!("tests/programs", "g76_mode0", Gsk, Metric, [G76Mode, G76InfeedZ]),
+    program!("tests/programs", "g76_mode1", Gsk, Metric, [G76Mode, G76InfeedZ]),
+    program!("tests/programs", "g76_mode2", Gsk, Metric, [G76Mode, G76InfeedZ]),
+    program!("tests/programs", "g78_mode0", Gsk, Metric, [G78Mode, G78DepthMode]),
+    program!("tests/programs", "g78_mode1", Gsk, Metric, [G78Mode, G78DepthMode]),
+    program!("tests/programs", "g78_mode2", Gsk, Metric, [G78Mode, G78DepthMode]),
+    program!("tests/programs", "g78_mode3", Gsk, Metric, [G78Mode, G78DepthMode]),
+    program!("tests/programs", "g78_mode4", Gsk, Metric, [G78Mode, G78DepthMode]),
+    program!("tests/programs", "g78_constant", Gsk, Metric, [G78DepthMode, G76DepthLast]),
+];
+
+/// The program named `name` (file stem).
+pub fn find(name: &str) -> Option<&'static Program> {
+    PROGRAMS.iter().find(|p| p.name == name)
+}
+
+/// The corpus as campaign cases: name, program bytes, configuration.
+pub fn cases() -> impl Iterator<Item = (String, Vec<u8>, Config)> {
+    PROGRAMS.iter().map(|p| (p.name.to_string(), p.text.as_bytes().to_vec(), p.config()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::collections::BTreeSet;
+
+    /// Every `.nc` file of `corpus/` and `tests/programs/` is built in, and nothing else.
+    #[test]
+    fn corpus_lists_every_program_file() {
+        let root = concat!(env!("CARGO_MANIFEST_DIR"), "/..");
+        let mut on_disk = BTreeSet::new();
+        for dir in ["corpus", "tests/programs"] {
+            for entry in std::fs::read_dir(format!("{root}/{dir}")).unwrap() {
+                let name = entry.unwrap().file_name().into_string().unwrap();
+                if let Some(stem) = name.strip_suffix(".nc") {
+                    on_disk.insert(format!("{dir}/{stem}.nc"));
+                }
+            }
+        }
+        let built_in: BTreeSet<String> = PROGRAMS.iter().map(|p| p.path.to_string()).collect();
+        assert_eq!(built_in, on_disk);
+        assert_eq!(built_in.len(), PROGRAMS.len(), "a program is listed twice");
+    }
+
+    /// Each program's header comment matches the configuration given here: `--dialect fanuc`
+    /// and `--units inch` are named there when needed.
+    #[test]
+    fn configurations_follow_the_headers() {
+        for p in PROGRAMS {
+            let header = p.text.lines().next().unwrap_or("");
+            assert_eq!(header.contains("--dialect fanuc"), p.dialect == Dialect::Fanuc, "{}", p.name);
+            assert_eq!(header.contains("--units inch"), p.units == Units::Inch, "{}", p.name);
+            assert!(!p.rules.is_empty(), "{} illustrates no rule", p.name);
+        }
+    }
+
+    /// The reference expands each program as expected: the G78 example ends in its alarm, every
+    /// other program without one, with thread moves.
+    #[test]
+    fn reference_results_are_as_expected() {
+        for p in PROGRAMS {
+            let t = cycle_spec::expand(p.text.as_bytes(), &p.config());
+            match (p.expect_alarm, t.alarm) {
+                (None, None) => {
+                    assert!(t.moves().any(|m| m.kind == cycle_vocab::MoveKind::Thread), "{}: no thread move", p.name)
+                }
+                (Some(e), Some(a)) => assert_eq!((e.code, e.word, e.rule), (a.code, a.word, a.rule), "{}", p.name),
+                (e, a) => panic!("{}: expected alarm {e:?}, got {a:?}", p.name),
+            }
+        }
+    }
+
+    #[test]
+    fn find_by_name() {
+        assert_eq!(find("g78_example").unwrap().expect_alarm.unwrap().rule, Rule::G78Mode);
+        assert_eq!(find("f76_ex1_microns").unwrap().config().dialect, Dialect::Fanuc);
+        assert!(find("nope").is_none());
+        assert_eq!(cases().count(), PROGRAMS.len());
+    }
+}
