@@ -1,29 +1,115 @@
-//! Production expander of the lathe thread cycles G92, G76, G78 and FANUC-style G76
-//! (in progress: the depth schedule and the fixed-point helpers are in place).
+//! Production expander of the lathe thread cycles G92, G76, G78 and FANUC-style G76.
+//!
+//! `no_std`, no heap, no floating point, no `unsafe`, no panics: [`Expander`] is a streaming
+//! iterator over the trace events of a program (PRJ.TRACE), computed on the integer grid with
+//! exact fixed-point arithmetic ([`fixed`]). The rules and every interpretation are those of
+//! `docs/RULES.md` and `docs/INTERPRETATION.md`; each rule-implementing function cites its ID.
+//!
+//! Modules: [`schedule`] (rough-pass depths), [`fixed`] (exact integer helpers and the tangent
+//! table), `words` (word values and ranges), `modal` (block interpreter and check order),
+//! `g92`, `multipass` (G76/G78), `pullout`, `emit` (the per-pass move state machine), `config`.
 #![no_std]
 #![forbid(unsafe_code)]
 
+mod config;
+mod emit;
 pub mod fixed;
+mod g92;
+mod modal;
+mod multipass;
+mod pullout;
 pub mod schedule;
+mod words;
 
-use cycle_vocab::{Alarm, Config, Event};
+use cycle_vocab::{Alarm, Blocks, Config, Event};
+use emit::Cycle;
+use modal::{Action, Machine};
 
-/// Streaming expansion of a program.
+/// Streaming expansion of a program: one trace event per call of `next`, the alarm last.
 pub struct Expander<'a> {
-    program: &'a [u8],
-    config: Config,
+    blocks: Blocks<'a>,
+    machine: Machine,
+    /// The cycle being expanded, if any.
+    cycle: Option<Cycle>,
+    /// The configuration has been checked.
+    checked: bool,
+    /// M02/M30 was read: nothing after that block.
+    ended: bool,
+    /// The stream is over (end of program or after an alarm).
+    done: bool,
 }
 
 impl<'a> Expander<'a> {
     pub fn new(program: &'a [u8], config: Config) -> Expander<'a> {
-        Expander { program, config }
+        Expander {
+            blocks: Blocks::new(program),
+            machine: Machine::new(config),
+            cycle: None,
+            checked: false,
+            ended: false,
+            done: false,
+        }
+    }
+
+    fn fail(&mut self, alarm: Alarm) -> Option<Result<Event, Alarm>> {
+        self.done = true;
+        self.cycle = None;
+        Some(Err(alarm))
     }
 }
 
 impl Iterator for Expander<'_> {
     type Item = Result<Event, Alarm>;
+
     fn next(&mut self) -> Option<Self::Item> {
-        let _ = (self.program, self.config);
-        None
+        if self.done {
+            return None;
+        }
+        if !self.checked {
+            self.checked = true;
+            if let Err(a) = config::check(&self.machine.config) {
+                return self.fail(a);
+            }
+        }
+        loop {
+            if let Some(cycle) = &mut self.cycle {
+                if let Some(e) = cycle.next_event(&mut self.machine.pos) {
+                    return Some(Ok(e));
+                }
+                self.cycle = None;
+            }
+            if self.ended {
+                self.done = true;
+                return None;
+            }
+            let block = match self.blocks.next() {
+                None => {
+                    self.done = true;
+                    return None;
+                }
+                Some(Err(a)) => return self.fail(a),
+                Some(Ok(b)) => b,
+            };
+            match self.machine.block(&block) {
+                Err(a) => return self.fail(a),
+                Ok((action, end)) => {
+                    self.ended = end;
+                    match action {
+                        Action::Nothing => {}
+                        Action::Cycle(c) => self.cycle = Some(c),
+                        Action::Move(m) => {
+                            // PRJ.NOOP: a move to the current position is not emitted.
+                            if (m.x, m.z) != self.machine.pos {
+                                self.machine.pos = (m.x, m.z);
+                                return Some(Ok(Event::Move(m)));
+                            }
+                        }
+                    }
+                }
+            }
+        }
     }
 }
+
+#[cfg(test)]
+mod tests;

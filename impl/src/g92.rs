@@ -1,0 +1,96 @@
+//! G92 single thread cycle (M002): the modal run and the cycle's checks and path.
+
+use crate::emit::{Cut, Cycle, Path, Plan};
+use crate::pullout::{g92_amounts, offsets, tenths_of_lead, travel};
+use cycle_vocab::{Alarm, AlarmCode, Config, Pass, PassKind, Rule};
+
+/// G92.MODAL: what a run keeps (end point, R, cycle count) and what the program keeps
+/// (J, K, L).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct G92State {
+    /// End point of the run (X diameter, Z), absolute.
+    pub end: (i64, i64),
+    /// R, radius.
+    pub r: i64,
+    /// Cycles cut in this run.
+    pub index: u32,
+    /// J, K as absolute values (G92.JK.7), kept for the whole program.
+    pub j: Option<i64>,
+    pub k: Option<i64>,
+    /// L, kept for the whole program.
+    pub starts: u32,
+}
+
+impl G92State {
+    pub const fn new() -> G92State {
+        G92State { end: (0, 0), r: 0, index: 0, j: None, k: None, starts: 1 }
+    }
+
+    /// G92.MODAL: a new run (G92 after another motion mode) starts with R = 0 and the end point
+    /// at the current position.
+    pub fn new_run(&mut self, pos: (i64, i64)) {
+        self.end = pos;
+        self.r = 0;
+        self.index = 0;
+    }
+}
+
+fn sat(v: i128) -> i64 {
+    i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
+}
+
+/// One G92 cycle from `a` with the run's values: checks in the register's order — W = 0
+/// (G92.FORMAT), taper (G92.TAPER), side (COM.SIDE), No.107 (G92.JK.8), K against the long-axis
+/// travel (G92.PULLOUT), pass bound (PRJ.MAXPASS) — then the cycle (G92.PATH).
+pub fn cycle(config: &Config, st: &G92State, a: (i64, i64), lead: i64, line: u32) -> Result<Cycle, Alarm> {
+    let alarm = |code: AlarmCode, word: Option<u8>, rule: Rule| Alarm::new(code, word, rule, line);
+    let d = st.end;
+    let r = st.r;
+    // G92.FORMAT: W = 0 is a face thread.
+    let w = sat(i128::from(d.1) - i128::from(a.1));
+    if w == 0 {
+        return Err(alarm(AlarmCode::Geometry, Some(b'Z'), Rule::G92Format));
+    }
+    // G92.TAPER: U = D.x − A.x (diameter); R and U of different signs need 2|R| ≤ |U|.
+    let u = i128::from(d.0) - i128::from(a.0);
+    let r2 = 2 * i128::from(r);
+    if r != 0 && u != 0 && (r < 0) != (u < 0) && r2.abs() > u.abs() {
+        return Err(alarm(AlarmCode::Geometry, Some(b'R'), Rule::G92Taper));
+    }
+    // COM.SIDE: s = sign(A.x − C.x), C.x = D.x + R.
+    let cx = i128::from(d.0) + r2;
+    let s = (i128::from(a.0) - cx).signum();
+    if s == 0 {
+        return Err(alarm(AlarmCode::Geometry, Some(b'X'), Rule::ComSide));
+    }
+    // G92.JK.8: only No.107 = 0 is modelled.
+    if config.params.no107_pullout_speed != 0 {
+        return Err(alarm(AlarmCode::Unsupported, None, Rule::G92Jk8));
+    }
+    let c = tenths_of_lead(config.params.no19_pullout, lead, config.grid);
+    let amounts = g92_amounts(st.j, st.k, c);
+    if let Some(am) = amounts {
+        if am.k.unsigned_abs() >= travel(w, r) {
+            return Err(alarm(AlarmCode::Geometry, Some(b'K'), Rule::G92Pullout));
+        }
+    }
+    // PRJ.MAXPASS: one pass × L starts.
+    if st.starts > config.params.max_passes {
+        return Err(alarm(AlarmCode::TooManyPasses, Some(b'L'), Rule::PrjMaxPass));
+    }
+    let s = sat(s);
+    let cx = sat(cx);
+    let path = Path {
+        a,
+        lead,
+        starts: st.starts.max(1),
+        leadin: 0,
+        pull: amounts.map(|am| offsets(am, w, r, s)),
+        rule_path: Rule::G92Path,
+        rule_pull: Rule::G92Pullout,
+    };
+    // Pass header: the X infeed from the start point, |A.x − C.x| on diameter.
+    let depth = sat((i128::from(a.0) - i128::from(cx)).abs());
+    let header = Pass { index: st.index, kind: PassKind::Rough, diameter_depth: depth, rule: Rule::G92Path };
+    Ok(Cycle::new(path, Plan::Single, header, Cut { p0: (cx, a.1), end: d }))
+}

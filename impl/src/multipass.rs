@@ -1,0 +1,292 @@
+//! G76 / G78 / FANUC G76 multi-pass cycles (M001, M000, M003): first-block values, the
+//! second block's checks (step 5 of the check order) and the pass plan.
+
+use crate::emit::{Cut, Cycle, Path, Plan};
+use crate::fixed::mul_tan;
+use crate::pullout::{multi_amounts, offsets, tenths_of_lead, travel};
+use crate::schedule::{self, Rough, ScheduleParams};
+use cycle_vocab::{Alarm, AlarmCode, Config, Pass, PassKind, Rule};
+
+/// Which multi-pass code.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Code {
+    G76,
+    G78,
+}
+
+/// The values of a first block, kept for later cycles of the same code (G76.FORMAT).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FirstBlock {
+    /// m: finishing passes, 1…99.
+    pub m: u32,
+    /// r: chamfer width in tenths of the lead, when input (G76 only).
+    pub r: Option<u32>,
+    /// a: tool angle, degrees.
+    pub a: u32,
+    /// G76 D(e) 0…2, or the G78 infeed mode 0…4.
+    pub mode: u32,
+    /// G78 depth mode: false = constant (D0).
+    pub degressive: bool,
+    /// Δdmin, increments.
+    pub dmin: i64,
+    /// d, increments.
+    pub d: i64,
+    /// L, starts.
+    pub starts: u32,
+    /// E, lead-in distance (radius), 0 = none.
+    pub e: i64,
+}
+
+impl FirstBlock {
+    /// G76.DEFAULTS / G78.MODE / G78.DEPTHMODE: every value from its default.
+    pub fn defaults(config: &Config, code: Code) -> FirstBlock {
+        let p = &config.params;
+        FirstBlock {
+            m: p.p5142_finish_passes,
+            r: None,
+            a: p.p5143_tool_angle,
+            mode: match code {
+                Code::G76 => 0,
+                Code::G78 => p.p5144_infeed_mode,
+            },
+            degressive: match code {
+                Code::G76 => true,
+                Code::G78 => p.p5145_depth_mode != 0,
+            },
+            dmin: p.p5140_min_cut,
+            d: p.p5141_finish_allowance,
+            starts: 1,
+            e: 0,
+        }
+    }
+}
+
+/// The words of a second block, converted and range-checked.
+#[derive(Clone, Copy, Debug)]
+pub struct Second {
+    /// D: thread end point (X diameter, Z).
+    pub d: (i64, i64),
+    /// R(i), radius.
+    pub i: i64,
+    /// P(k), radius.
+    pub k: i64,
+    /// Q(Δd), radius.
+    pub dd: i64,
+    pub j: Option<i64>,
+    pub kk: Option<i64>,
+    pub lead: i64,
+}
+
+/// Infeed flank of a rough pass (G76.MODE, G78.MODE).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Flank {
+    Right,
+    Centre,
+    Left,
+}
+
+/// G76.MODE / G78.MODE: the flank of rough pass `n` (odd/even among rough passes).
+fn flank(code: Code, mode: u32, n: u32) -> Flank {
+    let odd = n % 2 == 1;
+    match (code, mode) {
+        (Code::G76, 1) | (Code::G78, 3) => {
+            if odd {
+                Flank::Right
+            } else {
+                Flank::Centre
+            }
+        }
+        (Code::G76, 2) | (Code::G78, 4) => {
+            if odd {
+                Flank::Left
+            } else {
+                Flank::Right
+            }
+        }
+        (Code::G78, 0) => Flank::Centre,
+        (Code::G78, 1) => Flank::Left,
+        _ => Flank::Right, // G76 e = 0, G78 mode 2
+    }
+}
+
+/// The pass plan of a multi-pass cycle and its fixed geometry.
+#[derive(Clone, Copy, Debug)]
+pub struct Multi {
+    code: Code,
+    mode: u32,
+    sched: ScheduleParams,
+    /// The current rough pass, `None` once finishing.
+    rough: Option<Rough>,
+    /// Finishing passes done (including the current one).
+    finish: u32,
+    m: u32,
+    index: u32,
+    /// C.x, diameter.
+    cx: i64,
+    /// A.z.
+    az: i64,
+    /// Side s (±1).
+    s: i64,
+    k: i64,
+    /// R(i), radius.
+    i: i64,
+    /// W.
+    w: i64,
+    /// Tool angle a (tan index a half-degrees = a/2 degrees).
+    a: u32,
+    /// t(T) = round(T·tan(a/2)).
+    t_target: i64,
+}
+
+fn sat(v: i128) -> i64 {
+    i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
+}
+
+impl Multi {
+    /// G76.INFEED.Z: t(δ) = round(δ·tan(a/2)).
+    fn t(&self, depth: i64) -> i64 {
+        i64::try_from(mul_tan(depth.max(0).unsigned_abs(), self.a)).unwrap_or(i64::MAX)
+    }
+
+    /// G76.INFEED.X, G76.INFEED.Z, G76.PATH: the cut of a pass at radius depth δ with Z offset
+    /// `off` (before the sign σ = −s).
+    fn cut(&self, depth: i64, off: i64) -> Cut {
+        let s = i128::from(self.s);
+        let x = i128::from(self.cx) + 2 * s * (i128::from(self.k) - i128::from(depth));
+        let z = i128::from(self.az) - s * i128::from(off);
+        let p0 = (sat(x), sat(z));
+        let end = (sat(x - 2 * i128::from(self.i)), sat(z + i128::from(self.w)));
+        Cut { p0, end }
+    }
+
+    /// The header and geometry of rough pass `r` (G76.DEPTH.*, G76.MODE, G78.MODE).
+    fn rough_pass(&self, r: &Rough) -> (Pass, Cut) {
+        let off = match flank(self.code, self.mode, r.n) {
+            Flank::Right => self.t(r.depth),
+            Flank::Centre => self.t_target,
+            // The mirror of the right flank about the centre.
+            Flank::Left => self.t_target.saturating_mul(2).saturating_sub(self.t(r.depth)),
+        };
+        let header =
+            Pass { index: self.index, kind: PassKind::Rough, diameter_depth: r.depth.saturating_mul(2), rule: r.rule };
+        (header, self.cut(r.depth, off))
+    }
+
+    /// G76.FINISH, G76.FINISH.Z: finishing pass at depth k, at the Z of the last rough pass.
+    fn finish_pass(&self) -> (Pass, Cut) {
+        let kind = if self.finish <= 1 { PassKind::Finish } else { PassKind::Spring };
+        let header = Pass { index: self.index, kind, diameter_depth: self.k.saturating_mul(2), rule: Rule::G76Finish };
+        (header, self.cut(self.k, self.t_target))
+    }
+
+    /// The first pass.
+    fn begin(&mut self) -> (Pass, Cut) {
+        let r = schedule::first(&self.sched);
+        self.rough = Some(r);
+        self.index = 1;
+        self.rough_pass(&r)
+    }
+
+    /// The pass after the current one, or `None` when the cycle is done.
+    pub fn advance(&mut self) -> Option<(Pass, Cut)> {
+        self.index = self.index.checked_add(1)?;
+        if let Some(prev) = self.rough {
+            if let Some(r) = schedule::next(&self.sched, &prev) {
+                self.rough = Some(r);
+                return Some(self.rough_pass(&r));
+            }
+            self.rough = None;
+        }
+        if self.finish >= self.m {
+            return None;
+        }
+        self.finish += 1;
+        Some(self.finish_pass())
+    }
+}
+
+/// Step 5 of the check order for a second block (docs/INTERPRETATION.md, "G76/G78 cycle check
+/// order"): d ≥ k (G76.DEPTH.LAST), W = 0 (G76.FORMAT), side (COM.SIDE), A between B and C
+/// (COM.POINTS), pass bound (PRJ.MAXPASS), K against the long-axis travel (G76.PULLOUT /
+/// G78.PULLOUT); then the cycle (G76.PATH).
+pub fn cycle(
+    config: &Config,
+    code: Code,
+    first: &FirstBlock,
+    a: (i64, i64),
+    sec: &Second,
+    line: u32,
+) -> Result<Cycle, Alarm> {
+    let alarm = |code: AlarmCode, word: u8, rule: Rule| Alarm::new(code, Some(word), rule, line);
+    // d ≥ k (OPEN): no rough pass could exist.
+    if first.d >= sec.k {
+        return Err(alarm(AlarmCode::OutOfRange, b'R', Rule::G76DepthLast));
+    }
+    let w = sat(i128::from(sec.d.1) - i128::from(a.1));
+    if w == 0 {
+        return Err(alarm(AlarmCode::Geometry, b'Z', Rule::G76Format));
+    }
+    // C.x = D.x + i (radius); s = sign(A.x − C.x).
+    let cx = i128::from(sec.d.0) + 2 * i128::from(sec.i);
+    let s = (i128::from(a.0) - cx).signum();
+    if s == 0 {
+        return Err(alarm(AlarmCode::Geometry, b'X', Rule::ComSide));
+    }
+    // B.x = C.x + s·k; A must not lie between B and C.
+    let bx = cx + 2 * s * i128::from(sec.k);
+    if s * (i128::from(a.0) - bx) < 0 {
+        return Err(alarm(AlarmCode::Geometry, b'X', Rule::ComPoints));
+    }
+    let target = sec.k - first.d; // 1 ≤ T ≤ N
+    let sched =
+        ScheduleParams { first_cut: sec.dd, min_cut: first.dmin, target, constant: !first.degressive };
+    let max = config.params.max_passes;
+    let too_many = alarm(AlarmCode::TooManyPasses, b'Q', Rule::PrjMaxPass);
+    let rough = schedule::rough_pass_count(&sched, max).ok_or(too_many)?;
+    let total = (u64::from(rough) + u64::from(first.m)) * u64::from(first.starts);
+    if total > u64::from(max) {
+        return Err(too_many);
+    }
+    let p = &config.params;
+    let chamfer = tenths_of_lead(first.r.unwrap_or(p.p5130_chamfer), sec.lead, config.grid);
+    let amounts = multi_amounts(sec.j, sec.kk, chamfer, p.p5131_chamfer_angle);
+    let rule_pull = match code {
+        Code::G76 => Rule::G76Pullout,
+        Code::G78 => Rule::G78Pullout,
+    };
+    if let Some(am) = amounts {
+        if am.k.unsigned_abs() >= travel(w, sec.i) {
+            return Err(alarm(AlarmCode::Geometry, b'K', rule_pull));
+        }
+    }
+    let s = sat(s);
+    let mut multi = Multi {
+        code,
+        mode: first.mode,
+        sched,
+        rough: None,
+        finish: 0,
+        m: first.m,
+        index: 0,
+        cx: sat(cx),
+        az: a.1,
+        s,
+        k: sec.k,
+        i: sec.i,
+        w,
+        a: first.a,
+        t_target: 0,
+    };
+    multi.t_target = multi.t(target);
+    let (header, cut) = multi.begin();
+    let path = Path {
+        a,
+        lead: sec.lead,
+        starts: first.starts.max(1),
+        leadin: sat(2 * i128::from(s) * i128::from(first.e)),
+        pull: amounts.map(|am| offsets(am, w, sec.i, s)),
+        rule_path: Rule::G76Path,
+        rule_pull,
+    };
+    Ok(Cycle::new(path, Plan::Multi(multi), header, cut))
+}

@@ -1,0 +1,164 @@
+//! Pull-out amounts and geometry (G92.JK.*, G92.PULLOUT, G76.PULLOUT, G78.PULLOUT,
+//! COM.LONGAXIS). Amounts are radius increments; offsets returned are relative to the thread
+//! end point, X on diameter.
+
+use crate::fixed::{div_round, div_round_signed, mul_tan};
+use cycle_vocab::Grid;
+
+/// A resolved pull-out: J on the short axis, K along the long axis (both > 0).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Amounts {
+    pub j: i64,
+    pub k: i64,
+}
+
+/// A length of `tenths` × lead / 10, rounded once half up to the length grid (G92.JK.1 No.19,
+/// G76.PULLOUT chamfer width r / 5130).
+pub fn tenths_of_lead(tenths: u32, lead: i64, grid: Grid) -> i64 {
+    let num = u128::from(tenths) * u128::from(lead.unsigned_abs());
+    let den = 10 * u128::from(grid.lead_counts_per_increment().unsigned_abs());
+    i64::try_from(div_round(num, den)).unwrap_or(i64::MAX)
+}
+
+/// G92.JK.1–G92.JK.6 as one function of J and K (absolute values, G92.JK.7) and the No.19
+/// amount `c`; `None` when no pull-out is made (a resolved amount of 0).
+pub fn g92_amounts(j: Option<i64>, k: Option<i64>, c: i64) -> Option<Amounts> {
+    let (j, k) = match (j, k) {
+        (None, None) => (c, c),              // G92.JK.1
+        (None, Some(0)) => (c, c),           // G92.JK.2 with K = 0 read as JK.5
+        (None, Some(k)) => (c, k),           // G92.JK.2
+        (Some(0), _) => (0, 0),              // G92.JK.4, G92.JK.6
+        (Some(j), None | Some(0)) => (j, j), // G92.JK.3, G92.JK.5
+        (Some(j), Some(k)) => (j, k),
+    };
+    (j > 0 && k > 0).then_some(Amounts { j, k })
+}
+
+/// G76.PULLOUT / G78.PULLOUT: J and K of the second block, the chamfer width (r or 5130 tenths
+/// of the lead, already on the grid) and the chamfer angle 5131 in degrees. `None`: no pull-out.
+pub fn multi_amounts(j: Option<i64>, k: Option<i64>, chamfer: i64, angle_deg: u32) -> Option<Amounts> {
+    let j_of = |k: i64| -> i64 {
+        let v = mul_tan(k.max(0).unsigned_abs(), angle_deg.saturating_mul(2));
+        i64::try_from(v).unwrap_or(i64::MAX)
+    };
+    let (j, k) = match (j, k) {
+        (None, None) => (j_of(chamfer), chamfer),
+        (None, Some(k)) => (j_of(k), k),
+        (Some(j), None | Some(0)) => (j, j),
+        (Some(j), Some(k)) => (j, k),
+    };
+    (j > 0 && k > 0).then_some(Amounts { j, k })
+}
+
+/// The pull-out of a thread from `start` to `end` (X diameter), as offsets of its start and end
+/// points from `end` (X on diameter), and the long-axis travel it must stay within.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Offsets {
+    pub start: (i64, i64),
+    pub end: (i64, i64),
+}
+
+/// Sign of a value: −1, 0, 1.
+pub const fn sign(v: i64) -> i64 {
+    if v > 0 {
+        1
+    } else if v < 0 {
+        -1
+    } else {
+        0
+    }
+}
+
+/// COM.LONGAXIS: whether Z is the long axis of a thread with Z travel `w` and radius taper
+/// `r` (start X − end X, radius): |W| > |R|.
+pub fn z_long(w: i64, r: i64) -> bool {
+    w.unsigned_abs() > r.unsigned_abs()
+}
+
+/// The long-axis travel of the thread (what K must stay below).
+pub fn travel(w: i64, r: i64) -> u64 {
+    if z_long(w, r) {
+        w.unsigned_abs()
+    } else {
+        r.unsigned_abs()
+    }
+}
+
+fn sat(v: i128) -> i64 {
+    i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
+}
+
+/// G92.PULLOUT geometry (also G76.PATH with R = i): `w` is the thread's Z travel (≠ 0), `r` the
+/// radius taper (start X − end X), `s` the side (toward A on X).
+///
+/// Z long: the pull-out starts where K of Z travel remains, X there = end + round(R·K/|W|)
+/// (radius); it ends at the end Z, X = end + s·J. X long: it starts at X = end + sign(R)·K,
+/// Z = end − sign(W)·round(|W|·K/|R|); it ends at the end X, Z = end − sign(W)·J.
+pub fn offsets(a: Amounts, w: i64, r: i64, s: i64) -> Offsets {
+    let sz = i128::from(sign(w));
+    let (j, k) = (i128::from(a.j), i128::from(a.k));
+    let (w, r) = (i128::from(w), i128::from(r));
+    if z_long(sat(w), sat(r)) {
+        let dx = div_round_signed(r * k, w.abs()); // radius
+        Offsets { start: (sat(2 * dx), sat(-sz * k)), end: (sat(2 * i128::from(s) * j), 0) }
+    } else {
+        let dz = div_round_signed(w.abs() * k, r.abs());
+        Offsets { start: (sat(2 * i128::from(sign(sat(r))) * k), sat(-sz * dz)), end: (0, sat(-sz * j)) }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn g92_jk_table() {
+        let c = 30;
+        assert_eq!(g92_amounts(None, None, c), Some(Amounts { j: 30, k: 30 }));
+        assert_eq!(g92_amounts(None, Some(5), c), Some(Amounts { j: 30, k: 5 }));
+        assert_eq!(g92_amounts(None, Some(0), c), Some(Amounts { j: 30, k: 30 }));
+        assert_eq!(g92_amounts(Some(0), None, c), None);
+        assert_eq!(g92_amounts(Some(0), Some(7), c), None);
+        assert_eq!(g92_amounts(Some(4), None, c), Some(Amounts { j: 4, k: 4 }));
+        assert_eq!(g92_amounts(Some(4), Some(0), c), Some(Amounts { j: 4, k: 4 }));
+        assert_eq!(g92_amounts(Some(4), Some(9), c), Some(Amounts { j: 4, k: 9 }));
+        assert_eq!(g92_amounts(None, None, 0), None);
+    }
+
+    #[test]
+    fn multi_table() {
+        // 5131 = 45°: J = K.
+        assert_eq!(multi_amounts(None, None, 2000, 45), Some(Amounts { j: 2000, k: 2000 }));
+        // 30°: J = round(2000·0.57735) = 1155.
+        assert_eq!(multi_amounts(None, Some(2000), 0, 30), Some(Amounts { j: 1155, k: 2000 }));
+        assert_eq!(multi_amounts(Some(1500), None, 0, 45), Some(Amounts { j: 1500, k: 1500 }));
+        assert_eq!(multi_amounts(Some(1500), Some(0), 0, 45), Some(Amounts { j: 1500, k: 1500 }));
+        assert_eq!(multi_amounts(Some(1500), Some(2000), 0, 45), Some(Amounts { j: 1500, k: 2000 }));
+        assert_eq!(multi_amounts(None, None, 0, 45), None); // P010060: r = 0 input
+        assert_eq!(multi_amounts(Some(0), Some(2000), 0, 45), None);
+        assert_eq!(multi_amounts(None, Some(0), 100, 45), None);
+    }
+
+    #[test]
+    fn chamfer_widths() {
+        // r = 10 tenths of a 4 mm lead = 4 mm; No.19 = 10 of 3 mm = 3 mm (ISB: 10 counts/inc).
+        assert_eq!(tenths_of_lead(10, 40_000, Grid::METRIC_ISB), 4_000);
+        assert_eq!(tenths_of_lead(8, 40_000, Grid::METRIC_ISB), 3_200);
+        // 5 tenths of 1.5875 mm = 0.79375 → 0.794.
+        assert_eq!(tenths_of_lead(5, 15_875, Grid::METRIC_ISB), 794);
+    }
+
+    /// G92.EXAMPLE: X58.7 Z-28 from X65 Z5, J3 K1: start 1 mm before the end on Z, end
+    /// 3 mm (radius) out.
+    #[test]
+    fn g92_example_geometry() {
+        let o = offsets(Amounts { j: 3_000, k: 1_000 }, -33_000, 0, 1);
+        assert_eq!(o, Offsets { start: (0, 1_000), end: (6_000, 0) });
+        // Taper R = −2 mm over W = −35 mm, K = 1: X = end − round(2·1/35) = −0.057 radius.
+        let o = offsets(Amounts { j: 1_000, k: 1_000 }, -35_000, -2_000, 1);
+        assert_eq!(o.start, (-114, 1_000));
+        // X long: R = 10, W = −4, K = 2, J = 1: start X end + 2 (radius), Z end + round(4·2/10).
+        let o = offsets(Amounts { j: 1_000, k: 2_000 }, -4_000, 10_000, 1);
+        assert_eq!(o, Offsets { start: (4_000, 800), end: (0, 1_000) });
+    }
+}

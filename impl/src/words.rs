@@ -1,0 +1,162 @@
+//! Word values: a written [`Number`] converted to an integer on its grid and checked against its
+//! range (COM.UNITS, COM.RANGES, COM.LEAD, PRJ.DIALECT / F76.MICRONS). Each function names the
+//! alarm of docs/INTERPRETATION.md, "Which alarm, exactly".
+
+use cycle_vocab::params::MAX_LENGTH;
+use cycle_vocab::units::NumberError;
+use cycle_vocab::{Alarm, AlarmCode, Grid, Number, Rule, Units};
+
+/// The largest G92 J or K, increments (G92.JK.7, M002).
+pub const MAX_G92_JK: i64 = 99_999_999;
+
+/// Where a value error is reported: the word and the block's line.
+#[derive(Clone, Copy, Debug)]
+pub struct At {
+    pub letter: u8,
+    pub line: u32,
+}
+
+impl At {
+    pub const fn alarm(self, code: AlarmCode, rule: Rule) -> Alarm {
+        Alarm::new(code, Some(self.letter), rule, self.line)
+    }
+
+    /// OUT OF RANGE with the generic rule COM.RANGES.
+    pub const fn out_of_range(self) -> Alarm {
+        self.alarm(AlarmCode::OutOfRange, Rule::ComRanges)
+    }
+}
+
+fn scale_error(e: NumberError, at: At) -> Alarm {
+    match e {
+        NumberError::Precision => at.alarm(AlarmCode::Precision, Rule::ComUnits),
+        NumberError::Overflow => at.out_of_range(),
+        NumberError::NotInteger => at.alarm(AlarmCode::NotInteger, Rule::ComRanges),
+    }
+}
+
+/// COM.UNITS: a length in increments of the grid. `increments` (F76.MICRONS: FANUC P/Q
+/// without a decimal point) reads a number without a point as a count of increments.
+pub fn length(n: Number, grid: Grid, increments: bool, at: At) -> Result<i64, Alarm> {
+    let places = if increments && !n.point { 0 } else { grid.decimals() };
+    n.scaled(places).map_err(|e| scale_error(e, at))
+}
+
+/// COM.RANGES: a length with `lo ≤ v ≤ hi`.
+pub fn length_in(n: Number, grid: Grid, increments: bool, lo: i64, hi: i64, at: At) -> Result<i64, Alarm> {
+    let v = length(n, grid, increments, at)?;
+    if v < lo || v > hi {
+        return Err(at.out_of_range());
+    }
+    Ok(v)
+}
+
+/// COM.RANGES: a signed length |v| ≤ N (X, U, Z, W, R).
+pub fn signed_length(n: Number, grid: Grid, at: At) -> Result<i64, Alarm> {
+    length_in(n, grid, false, -MAX_LENGTH, MAX_LENGTH, at)
+}
+
+/// COM.RANGES: an integer word (P of the first block, L, D) written without a decimal point
+/// (`NOT INTEGER`, rule COM.RANGES) within `lo ≤ v ≤ hi` (`OUT OF RANGE` with `rule`).
+pub fn integer_in(n: Number, lo: i64, hi: i64, rule: Rule, at: At) -> Result<i64, Alarm> {
+    let v = n.integer().map_err(|e| scale_error(e, at))?;
+    if v < lo || v > hi {
+        return Err(at.alarm(AlarmCode::OutOfRange, rule));
+    }
+    Ok(v)
+}
+
+/// COM.LEAD: F as lead counts (0.0001 mm / 0.00001 in), 1 … 99 990 000 (metric) or
+/// 1 … 999 000 (inch).
+pub fn lead_f(n: Number, grid: Grid, at: At) -> Result<i64, Alarm> {
+    let v = n.scaled(grid.lead_decimals()).map_err(|e| scale_error(e, at))?;
+    let max = match grid.units {
+        Units::Metric => 99_990_000,
+        Units::Inch => 999_000,
+    };
+    if !(1..=max).contains(&v) {
+        return Err(at.out_of_range());
+    }
+    Ok(v)
+}
+
+/// COM.LEAD: I (threads per inch, at most 4 decimals, 0.0001 … 254 metric / 0.0001 … 100 inch)
+/// as a lead, rounded once half up to the lead grid: 25.4/I mm or 1/I in.
+pub fn lead_i(n: Number, grid: Grid, at: At) -> Result<i64, Alarm> {
+    let tpi = n.scaled(4).map_err(|e| scale_error(e, at))?; // threads per 10 000 inches
+    let (max, inch_in_counts) = match grid.units {
+        // 25.4 mm = 254 000 counts of 0.0001 mm; ×10^4 for I in 0.0001 threads per inch.
+        Units::Metric => (2_540_000, 2_540_000_000u128),
+        // 1 in = 100 000 counts of 0.00001 in; ×10^4.
+        Units::Inch => (1_000_000, 1_000_000_000u128),
+    };
+    if !(1..=max).contains(&tpi) {
+        return Err(at.out_of_range());
+    }
+    let lead = crate::fixed::div_round(inch_in_counts, u128::from(tpi.unsigned_abs()));
+    // lead ≤ 2.54·10^9 fits i64.
+    Ok(i64::try_from(lead).unwrap_or(i64::MAX))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cycle_vocab::Increment;
+
+    fn num(negative: bool, mantissa: u64, decimals: u8, point: bool) -> Number {
+        Number { negative, mantissa, decimals, point }
+    }
+
+    const AT: At = At { letter: b'X', line: 7 };
+
+    #[test]
+    fn lengths() {
+        let g = Grid::METRIC_ISB;
+        assert_eq!(length(num(false, 587, 1, true), g, false, AT), Ok(58_700));
+        assert_eq!(
+            length(num(false, 587_001, 4, true), g, false, AT),
+            Err(Alarm::new(AlarmCode::Precision, Some(b'X'), Rule::ComUnits, 7))
+        );
+        assert_eq!(length(num(false, 2400, 0, false), g, true, AT), Ok(2400));
+        assert_eq!(length(num(false, 24, 1, true), g, true, AT), Ok(2400));
+        assert_eq!(signed_length(num(true, 999_999_999, 3, true), g, AT), Ok(-999_999_999));
+        assert_eq!(signed_length(num(false, 1_000_000, 0, false), g, AT), Err(AT.out_of_range()));
+        let isc = Grid { units: Units::Metric, increment: Increment::Isc };
+        assert_eq!(length(num(false, 587_001, 4, true), isc, false, AT), Ok(587_001));
+    }
+
+    #[test]
+    fn leads() {
+        let g = Grid::METRIC_ISB;
+        assert_eq!(lead_f(num(false, 3, 0, false), g, AT), Ok(30_000));
+        assert_eq!(lead_f(num(false, 0, 0, false), g, AT), Err(AT.out_of_range()));
+        assert_eq!(lead_f(num(false, 9999, 0, false), g, AT), Ok(99_990_000));
+        assert_eq!(lead_f(num(false, 99_991, 1, true), g, AT), Err(AT.out_of_range()));
+        // 16 TPI metric: 25.4/16 = 1.5875 mm.
+        assert_eq!(lead_i(num(false, 16, 0, false), g, AT), Ok(15_875));
+        // 20 TPI inch: 0.05 in = 5000 counts of 0.00001 in.
+        let inch = Grid { units: Units::Inch, increment: Increment::Isb };
+        assert_eq!(lead_i(num(false, 20, 0, false), inch, AT), Ok(5_000));
+        // 7 TPI inch: 0.142857… in → 14286.
+        assert_eq!(lead_i(num(false, 7, 0, false), inch, AT), Ok(14_286));
+        assert_eq!(lead_i(num(false, 101, 0, false), inch, AT), Err(AT.out_of_range()));
+        assert_eq!(lead_i(num(false, 254, 0, false), g, AT), Ok(1_000));
+        assert_eq!(
+            lead_i(num(false, 100_001, 5, true), g, AT),
+            Err(Alarm::new(AlarmCode::Precision, Some(b'X'), Rule::ComUnits, 7))
+        );
+    }
+
+    #[test]
+    fn integers() {
+        assert_eq!(integer_in(num(false, 20545, 0, false), 0, 999_999, Rule::ComRanges, AT), Ok(20545));
+        assert_eq!(
+            integer_in(num(false, 2, 0, true), 0, 9, Rule::ComRanges, AT),
+            Err(Alarm::new(AlarmCode::NotInteger, Some(b'X'), Rule::ComRanges, 7))
+        );
+        assert_eq!(
+            integer_in(num(true, 2, 0, false), 0, 9, Rule::G76Mode, AT),
+            Err(Alarm::new(AlarmCode::OutOfRange, Some(b'X'), Rule::G76Mode, 7))
+        );
+    }
+}
