@@ -1,0 +1,261 @@
+//! The `cyclecheck` binary, run as a user runs it: exit codes, stdout, stderr (README, "The CLI").
+//! Expected results of `diff` and `corpus` are computed in-process with the same engines, so the
+//! tests hold before and after the production expander conforms.
+
+use cycle_oracle::engine::{Engine, ImplEngine, SpecEngine};
+use cycle_oracle::{conformance, corpus};
+use cycle_vocab::text::Trace;
+use cycle_vocab::Config;
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+fn corpus_file(name: &str) -> String {
+    root().join("corpus").join(name).to_string_lossy().into_owned()
+}
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_cyclecheck")).args(args).output().expect("the binary runs")
+}
+
+fn code(o: &Output) -> i32 {
+    o.status.code().expect("exited, not killed by a signal")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// A program file in the temporary directory, removed when dropped.
+struct TempFile(PathBuf);
+
+impl TempFile {
+    fn new(name: &str, bytes: &[u8]) -> TempFile {
+        let path = std::env::temp_dir().join(format!("cyclecheck-cli-{}-{name}", std::process::id()));
+        std::fs::write(&path, bytes).unwrap();
+        TempFile(path)
+    }
+
+    fn path(&self) -> &str {
+        self.0.to_str().unwrap()
+    }
+}
+
+impl Drop for TempFile {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.0);
+    }
+}
+
+#[test]
+fn expand_g92_example_prints_canonical_gcode() {
+    let o = run(&["expand", &corpus_file("g92_example.nc")]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.starts_with("(CYCLECHECK TRACE MM GRID 0.001)\n"), "{out}");
+    assert!(out.contains("(PASS 1 ROUGH DEPTH 3.150)\n"), "{out}");
+    assert!(out.contains("G32 X58.700 Z-27.000 F3.0000\n"), "{out}");
+    assert!(out.contains("G32 X64.700 Z-28.000 F3.0000\n"), "{out}");
+    // Exactly the spec's trace.
+    let program = std::fs::read(corpus_file("g92_example.nc")).unwrap();
+    assert_eq!(out, SpecEngine.expand(&program, &Config::default()).to_gcode());
+    assert!(stderr(&o).is_empty(), "{}", stderr(&o));
+}
+
+#[test]
+fn expand_json_parses_back() {
+    for engine in ["spec", "impl"] {
+        let o = run(&["expand", &corpus_file("g92_example.nc"), "--engine", engine, "--format", "json"]);
+        let trace = Trace::from_json(&stdout(&o)).expect("the JSON output is a trace");
+        let program = std::fs::read(corpus_file("g92_example.nc")).unwrap();
+        let direct = match engine {
+            "spec" => SpecEngine.expand(&program, &Config::default()),
+            _ => ImplEngine::default().expand(&program, &Config::default()),
+        };
+        assert_eq!(trace, direct, "{engine}");
+        assert_eq!(code(&o), if direct.alarm.is_some() { 2 } else { 0 }, "{engine}");
+    }
+}
+
+#[test]
+fn expand_under_fanuc_dialect_and_inch_units() {
+    let o = run(&["expand", &corpus_file("f76_ex1_microns.nc"), "--dialect", "fanuc"]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let gsk = run(&["expand", &corpus_file("f76_ex1.nc")]);
+    assert_eq!(stdout(&o), stdout(&gsk), "the micron form is the same thread");
+
+    let inch = root().join("tests/programs/g92_inch.nc");
+    let o = run(&["expand", inch.to_str().unwrap(), "--units", "inch"]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(stdout(&o).starts_with("(CYCLECHECK TRACE INCH GRID 0.0001)\n"), "{}", stdout(&o));
+    // Without --units inch, its G20 is refused.
+    let o = run(&["expand", inch.to_str().unwrap()]);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("rule COM.UNITS"), "{}", stderr(&o));
+}
+
+#[test]
+fn options_change_the_configuration() {
+    let file = corpus_file("g92_example.nc");
+    let o = run(&["expand", &file, "--increment", "isc"]);
+    assert!(stdout(&o).contains("G32 X58.7000 Z-27.0000 F3.0000"), "{}", stdout(&o));
+    // Start point: the first move leaves from there, so it is printed as given by the program.
+    let p = TempFile::new("x_only.nc", b"G0 X10\n");
+    let o = run(&["expand", p.path(), "--start-x", "5", "--start-z=-2.5"]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(stdout(&o).contains("G00 X10.000 Z-2.500"), "{}", stdout(&o));
+    // --param reaches the engine: No.107 ≠ 0 is refused on the first G92 cycle.
+    let o = run(&["expand", &file, "--param", "107=1"]);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).contains("rule G92.JK.8"), "{}", stderr(&o));
+}
+
+#[test]
+fn missing_lead_is_an_alarm_naming_word_and_rule() {
+    let p = TempFile::new("no_lead.nc", b"G0 X65 Z5\nG92 X58.7 Z-28 J3 K1\n");
+    let o = run(&["expand", p.path()]);
+    assert_eq!(code(&o), 2);
+    let err = stderr(&o);
+    assert_eq!(err.trim_end(), "ALARM 2001 MISSING WORD: word F, rule COM.LEAD, line 2");
+    assert!(stdout(&o).ends_with("(ALARM 2001 LINE 2 WORD F RULE COM.LEAD)\n"), "{}", stdout(&o));
+}
+
+#[test]
+fn g78_example_ends_in_its_alarm() {
+    let o = run(&["expand", &corpus_file("g78_example.nc")]);
+    assert_eq!(code(&o), 2);
+    assert_eq!(stderr(&o).trim_end(), "ALARM 2002 OUT OF RANGE: word P, rule G78.MODE, line 3");
+}
+
+#[test]
+fn garbage_is_an_alarm_not_a_panic() {
+    // Deterministic pseudo-random bytes, including NUL and bytes above 0x7F.
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let bytes: Vec<u8> = (0..512)
+        .map(|_| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 32) as u8
+        })
+        .collect();
+    let p = TempFile::new("random.nc", &bytes);
+    for args in [vec!["expand", p.path()], vec!["expand", p.path(), "--engine", "impl"], vec!["diff", p.path()]] {
+        let o = run(&args);
+        let c = code(&o);
+        assert!(c == 1 || c == 2, "{args:?}: exit {c}\n{}", stderr(&o));
+        assert!(!stderr(&o).contains("panicked"), "{args:?}: {}", stderr(&o));
+    }
+    let o = run(&["expand", p.path()]);
+    assert_eq!(code(&o), 2);
+    assert!(stderr(&o).starts_with("ALARM 1001 BAD CHARACTER: word 0x"), "{}", stderr(&o));
+}
+
+#[test]
+fn bad_input_exits_2() {
+    let file = corpus_file("g92_example.nc");
+    for args in [
+        vec![],
+        vec!["frobnicate"],
+        vec!["expand"],
+        vec!["expand", "/nonexistent/program.nc"],
+        vec!["expand", &file, "--bogus"],
+        vec!["expand", &file, "--engine", "other"],
+        vec!["expand", &file, "--format", "xml"],
+        vec!["expand", &file, "--dialect", "heidenhain"],
+        vec!["expand", &file, "--units", "furlong"],
+        vec!["expand", &file, "--increment", "isd"],
+        vec!["expand", &file, "--param", "5144=5"],
+        vec!["expand", &file, "--param", "9999=1"],
+        vec!["expand", &file, "--param", "19"],
+        vec!["expand", &file, "--start-x", "1.0001"],
+        vec!["expand", &file, "--start-z", "abc"],
+        vec!["expand", &file, "--start-x", "1000000"],
+        vec!["expand", &file, "--start-x"],
+        vec!["expand", &file, &file],
+        vec!["diff", &file, "--engine", "spec"],
+        vec!["corpus", "--format", "gcode"],
+        vec!["corpus", "extra"],
+    ] {
+        let o = run(&args);
+        assert_eq!(code(&o), 2, "{args:?}: {}", stdout(&o));
+        assert!(stderr(&o).starts_with("cyclecheck: "), "{args:?}: {}", stderr(&o));
+        assert!(stdout(&o).is_empty(), "{args:?}: {}", stdout(&o));
+    }
+    let o = run(&["--help"]);
+    assert_eq!(code(&o), 0);
+    assert!(stdout(&o).contains("cyclecheck corpus"));
+}
+
+/// `diff` exits 1 on a divergence (printing it), else 2 on an alarm (after checking), else 0.
+#[test]
+fn diff_exit_codes_follow_the_relation() {
+    for p in corpus::PROGRAMS {
+        let file = root().join(p.path);
+        let mut args = vec!["diff", file.to_str().unwrap()];
+        if p.config().dialect == cycle_vocab::Dialect::Fanuc {
+            args.extend(["--dialect", "fanuc"]);
+        }
+        if p.config().grid.units == cycle_vocab::Units::Inch {
+            args.extend(["--units", "inch"]);
+        }
+        let o = run(&args);
+        let reference = SpecEngine.expand(p.text.as_bytes(), &p.config());
+        let candidate = ImplEngine::default().expand(p.text.as_bytes(), &p.config());
+        match conformance::check(&reference, &candidate) {
+            Err(d) => {
+                assert_eq!(code(&o), 1, "{}", p.name);
+                assert_eq!(stdout(&o).trim_end(), d.to_string(), "{}", p.name);
+            }
+            Ok(()) => {
+                assert!(stdout(&o).starts_with(&format!("conform: {} events", reference.events.len())), "{}", p.name);
+                match reference.alarm {
+                    Some(a) => {
+                        assert_eq!(code(&o), 2, "{}", p.name);
+                        assert_eq!(stderr(&o).trim_end(), conformance::alarm_summary(&a));
+                    }
+                    None => assert_eq!(code(&o), 0, "{}", p.name),
+                }
+            }
+        }
+    }
+}
+
+/// `corpus` prints one line per program and a summary; exit 0 only when all conform.
+#[test]
+fn corpus_command_reports_every_program() {
+    let all_conform = corpus::PROGRAMS.iter().all(|p| {
+        let r = SpecEngine.expand(p.text.as_bytes(), &p.config());
+        let c = ImplEngine::default().expand(p.text.as_bytes(), &p.config());
+        conformance::check(&r, &c).is_ok()
+    });
+    let o = run(&["corpus"]);
+    assert_eq!(code(&o), if all_conform { 0 } else { 1 }, "{}", stdout(&o));
+    let out = stdout(&o);
+    for p in corpus::PROGRAMS {
+        let line = out.lines().find(|l| l.split_whitespace().next() == Some(p.name));
+        let line = line.unwrap_or_else(|| panic!("no line for {}\n{out}", p.name));
+        let t = SpecEngine.expand(p.text.as_bytes(), &p.config());
+        assert!(line.contains(&format!("{} events", t.events.len())), "{line}");
+        if all_conform && p.name == "g78_example" {
+            assert!(line.ends_with("conform (alarm 2002 P G78.MODE)"), "{line}");
+        }
+    }
+    let n = corpus::PROGRAMS.len();
+    assert!(out.contains(&format!("{n} programs: ")), "{out}");
+
+    let o = run(&["corpus", "--format", "json"]);
+    assert_eq!(code(&o), if all_conform { 0 } else { 1 });
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    assert_eq!(v["programs"].as_array().map(Vec::len), Some(n));
+    assert_eq!(v["summary"]["programs"], n);
+    assert_eq!(v["programs"][0]["name"], "g92_example");
+    assert_eq!(v["programs"][0]["rules"][0], "G92.EXAMPLE");
+}
