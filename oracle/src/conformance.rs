@@ -328,7 +328,7 @@ impl fmt::Display for Divergence {
                 "angle" => " (0.001°)",
                 _ => "",
             };
-            writeln!(f, "  {field}: reference {r}, candidate {c}{unit}")?;
+            writeln!(f, "  {field} differs: reference {r}, candidate {c}{unit}")?;
         }
         match self.rule {
             Some(rule) => match catalogue::entry(rule) {
@@ -465,7 +465,7 @@ mod tests {
             "field mismatch at event 3, field `x`",
             "reference: G32 X58.700 Z-27.000 F3.0000",
             "candidate: G32 X58.702 Z-27.000 F3.0000",
-            "x: reference 58700, candidate 58702",
+            "x differs: reference 58700, candidate 58702 (grid increments)",
             "rule: G92.PULLOUT (M002, impl): K before the end",
             "(PASS 1 ROUGH DEPTH 3.150)",
         ] {
