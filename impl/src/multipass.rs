@@ -243,7 +243,7 @@ pub fn cycle(
     let max = config.params.max_passes;
     let too_many = alarm(AlarmCode::TooManyPasses, b'Q', Rule::PrjMaxPass);
     let rough = schedule::rough_pass_count(&sched, max).ok_or(too_many)?;
-    let total = (u64::from(rough) + u64::from(first.m)) * u64::from(first.starts);
+    let total = (u64::from(rough) + u64::from(first.m)).saturating_mul(u64::from(first.starts));
     if total > u64::from(max) {
         return Err(too_many);
     }

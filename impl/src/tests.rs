@@ -549,3 +549,70 @@ fn no_panic_on_extreme_cycles() {
         }
     }
 }
+
+/// Random legal G76/G78 cycles in every grid: rough depths never decrease (strictly increase
+/// with Δdmin ≥ 1), the last rough depth is k − d, the finishing passes are at k and share the
+/// Z of the last rough pass, and the cycle ends at its start point.
+#[test]
+fn random_legal_multipass_cycles() {
+    let mut s = 0x0bad_cafe_dead_beefu64;
+    let mut checked = 0;
+    for round in 0..1_500u32 {
+        let mut r = || xorshift(&mut s);
+        let grid = Grid {
+            units: if round % 2 == 0 { Units::Metric } else { Units::Inch },
+            increment: if round % 4 < 2 { Increment::Isb } else { Increment::Isc },
+        };
+        let dec = grid.decimals();
+        let len = |v: i64| cycle_vocab::text::fixed(v, dec);
+        let k = 2 + (r() % 3_000) as i64;
+        let d = (r() % k as u64) as i64;
+        let dd = 1 + (r() % 1_500) as i64;
+        let dmin = (r() % 200) as i64;
+        let i = (r() % 2_000) as i64 - 1_000;
+        let dx = 10_000 + (r() % 50_000) as i64; // end X, diameter
+        let external = r() % 2 == 0;
+        let margin = 2 * (k + i.abs()) + 2 * (r() % 5_000) as i64 + 2;
+        let ax = if external { dx + margin } else { (dx - margin).max(-999_000) };
+        let az = (r() % 10_000) as i64;
+        let w = -(1_000 + (r() % 80_000) as i64);
+        let (code, p_mid, dword) = if r() % 2 == 0 {
+            ("G76", r() % 100, std::format!("D{}", r() % 3))
+        } else {
+            ("G78", r() % 5, std::format!("D{}", r() % 2))
+        };
+        let p = 10_000 * (1 + r() % 3) + 100 * p_mid + r() % 100;
+        let src = std::format!(
+            "G0 X{} Z{}\n{code} P{p:06} Q{} R{} {dword} L{}\n{code} X{} W{} R{} P{} Q{} F{}\n",
+            len(ax), len(az), len(dmin), len(d), 1 + r() % 2, len(dx), len(w), len(i), len(k), len(dd),
+            cycle_vocab::text::fixed(1 + (r() % 20_000) as i64, grid.lead_decimals()),
+        );
+        let cfg = Config { grid, params: Params { max_passes: 5_000, ..Params::default() }, ..Config::default() };
+        let t = expand(&src, cfg);
+        if let Some(a) = t.alarm {
+            // Only the pass bound or the chamfer pull-out may refuse these programs.
+            assert!(matches!(a.code, AlarmCode::TooManyPasses | AlarmCode::Geometry), "{src}\n{a}");
+            continue;
+        }
+        checked += 1;
+        let ps = passes(&t);
+        let m = usize::try_from(p / 10_000).unwrap();
+        let rough: Vec<i64> = ps[..ps.len() - m].iter().map(|p| p.diameter_depth / 2).collect();
+        assert!(rough.windows(2).all(|w| w[0] < w[1] || (dmin == 0 && w[0] <= w[1])), "{src}");
+        assert_eq!(rough.last().copied(), Some(k - d), "{src}");
+        assert!(ps[ps.len() - m..].iter().all(|p| p.diameter_depth == 2 * k));
+        let first_z: Vec<i64> = t
+            .events
+            .windows(2)
+            .filter_map(|w| match w {
+                [Event::Pass(_), Event::Move(m)] => Some(m.z),
+                _ => None,
+            })
+            .collect();
+        let n = first_z.len();
+        assert!(first_z[n - m - 1..].iter().all(|&z| z == first_z[n - 1]), "{src}");
+        let last = t.moves().last().unwrap();
+        assert_eq!((last.x, last.z), (ax, az), "{src}");
+    }
+    assert!(checked > 500, "{checked}");
+}
