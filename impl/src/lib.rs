@@ -10,6 +10,17 @@
 //! `g92`, `multipass` (G76/G78), `pullout`, `emit` (the per-pass move state machine), `config`.
 #![no_std]
 #![forbid(unsafe_code)]
+#![cfg_attr(
+    not(test),
+    deny(
+        clippy::unwrap_used,
+        clippy::expect_used,
+        clippy::indexing_slicing,
+        clippy::panic,
+        clippy::unreachable,
+        clippy::float_arithmetic
+    )
+)]
 
 mod config;
 mod emit;

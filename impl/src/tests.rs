@@ -22,8 +22,10 @@ pub fn inch() -> Config {
     Config { grid: Grid { units: Units::Inch, increment: Increment::Isb }, ..Config::default() }
 }
 
+/// Every example program expands without an alarm (the G78 example excepted, see
+/// `g78_example_alarm`); `--nocapture` prints the traces for review.
 #[test]
-fn print_corpus() {
+fn corpus_and_programs_expand() {
     for (name, src, cfg) in [
         ("g92", include_str!("../../corpus/g92_example.nc"), Config::default()),
         ("g76", include_str!("../../corpus/g76_example.nc"), Config::default()),
@@ -33,6 +35,13 @@ fn print_corpus() {
         ("f76_ex2", include_str!("../../corpus/f76_ex2.nc"), Config::default()),
         ("g92_inch", include_str!("../../tests/programs/g92_inch.nc"), inch()),
         ("g76_multistart", include_str!("../../tests/programs/g76_multistart.nc"), Config::default()),
+        ("g76_mode0", include_str!("../../tests/programs/g76_mode0.nc"), Config::default()),
+        ("g76_mode1", include_str!("../../tests/programs/g76_mode1.nc"), Config::default()),
+        ("g76_mode2", include_str!("../../tests/programs/g76_mode2.nc"), Config::default()),
+        ("g78_mode0", include_str!("../../tests/programs/g78_mode0.nc"), Config::default()),
+        ("g78_mode1", include_str!("../../tests/programs/g78_mode1.nc"), Config::default()),
+        ("g78_mode2", include_str!("../../tests/programs/g78_mode2.nc"), Config::default()),
+        ("g78_mode3", include_str!("../../tests/programs/g78_mode3.nc"), Config::default()),
         ("g78_mode4", include_str!("../../tests/programs/g78_mode4.nc"), Config::default()),
         ("g92_internal", include_str!("../../tests/programs/g92_internal.nc"), Config::default()),
         ("g92_taper", include_str!("../../tests/programs/g92_taper.nc"), Config::default()),
@@ -42,6 +51,8 @@ fn print_corpus() {
         ("g76_inch", include_str!("../../tests/programs/g76_inch.nc"), inch()),
         ("g78_constant", include_str!("../../tests/programs/g78_constant.nc"), Config::default()),
     ] {
+        let t = expand(src, cfg);
+        assert_eq!(t.alarm.is_some(), name == "g78", "{name}");
         std::println!("== {name}\n{}", gcode(src, cfg));
     }
 }
