@@ -348,7 +348,7 @@ fn lead(d: &mut Dice, grid: Grid) -> Result<Lead, String> {
         0 => Lead::F(d.range(LEAD_UNIT / 4, 6 * LEAD_UNIT)),
         1 => Lead::I(d.range(4, 80) * 10_000 + if d.chance(20) { d.range(1, 9999) } else { 0 }),
         2 => Lead::F(d.one_of(&[1, max_lead(grid)])),
-        3 => return Err(format!("{}", d.one_of(&["0", "-1", "99999", "-0.5"]))),
+        3 => return Err(d.one_of(&["0", "-1", "99999", "-0.5"]).to_string()),
         4 => return Err(format!("{}1", fixed(d.range(1, 3 * LEAD_UNIT), grid.lead_decimals()))),
         _ => Lead::I(d.one_of(&[0, 1, 254 * 10_000, 254 * 10_000 + 1, 100 * 10_000 + 1])),
     })
@@ -424,7 +424,7 @@ fn build_g92(d: &mut Dice) -> Case {
         let kind = if n == 0 { 0 } else { d.weighted(&[55, 12, 10, 8, 8, 7]) };
         match kind {
             // A new cycle of the run (or the first): X (deeper), maybe Z, R, J, K, L.
-            0 | 1 | 2 => {
+            0..=2 => {
                 if n == 0 || kind == 1 {
                     words.push(('G', "92".to_string()));
                 }
