@@ -8,3 +8,10 @@
 
 pub mod program;
 pub mod source;
+pub mod model;
+pub mod schedule;
+
+pub mod depth_bounds;
+pub mod depth_step_monotone;
+pub mod fixed_point;
+pub mod mutation;

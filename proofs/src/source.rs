@@ -27,22 +27,46 @@ pub type Outcome = Result<(), Stop>;
 
 /// Values for a harness body, and the place its verdicts go.
 pub trait Source {
+    /// A value in `lo..=hi` (`lo <= hi`). Every other draw is made from this one, except under
+    /// Kani, where each width draws natively.
+    fn bounded_i128(&mut self, lo: i128, hi: i128) -> i128;
+
     /// A value in `lo..=hi` (`lo <= hi`).
-    fn bounded_i64(&mut self, lo: i64, hi: i64) -> i64;
+    fn bounded_i64(&mut self, lo: i64, hi: i64) -> i64 {
+        self.bounded_i128(i128::from(lo), i128::from(hi)) as i64
+    }
+
+    /// A value in `lo..=hi` (`lo <= hi`).
+    fn bounded_u64(&mut self, lo: u64, hi: u64) -> u64 {
+        self.bounded_i128(i128::from(lo), i128::from(hi)) as u64
+    }
 
     /// A value in `lo..=hi` (`lo <= hi`).
     fn bounded_u32(&mut self, lo: u32, hi: u32) -> u32 {
-        self.bounded_i64(i64::from(lo), i64::from(hi)) as u32
+        self.bounded_i128(i128::from(lo), i128::from(hi)) as u32
+    }
+
+    /// Any `u128`, as two 64-bit halves (high half drawn first).
+    fn any_u128(&mut self) -> u128 {
+        let hi = self.bounded_u64(0, u64::MAX);
+        let lo = self.bounded_u64(0, u64::MAX);
+        (u128::from(hi) << 64) | u128::from(lo)
+    }
+
+    /// A value in `lo..=hi` from a small finite domain (an angle, a mode, a choice) that the
+    /// exhaustive driver enumerates whole, whatever its width.
+    fn every_u32(&mut self, lo: u32, hi: u32) -> u32 {
+        self.bounded_u32(lo, hi)
     }
 
     /// Either boolean.
     fn bool(&mut self) -> bool {
-        self.bounded_u32(0, 1) == 1
+        self.every_u32(0, 1) == 1
     }
 
     /// An index in `0..n` (`n >= 1`): which of `n` alternatives.
     fn choose(&mut self, n: u32) -> u32 {
-        self.bounded_u32(0, n - 1)
+        self.every_u32(0, n - 1)
     }
 
     /// Restricts the harness to cases where `cond` holds; a concrete driver discards the case.
@@ -87,8 +111,20 @@ pub struct KaniSource;
 
 #[cfg(kani)]
 impl Source for KaniSource {
+    fn bounded_i128(&mut self, lo: i128, hi: i128) -> i128 {
+        let v: i128 = kani::any();
+        kani::assume(lo <= v && v <= hi);
+        v
+    }
+
     fn bounded_i64(&mut self, lo: i64, hi: i64) -> i64 {
         let v: i64 = kani::any();
+        kani::assume(lo <= v && v <= hi);
+        v
+    }
+
+    fn bounded_u64(&mut self, lo: u64, hi: u64) -> u64 {
+        let v: u64 = kani::any();
         kani::assume(lo <= v && v <= hi);
         v
     }
@@ -97,6 +133,10 @@ impl Source for KaniSource {
         let v: u32 = kani::any();
         kani::assume(lo <= v && v <= hi);
         v
+    }
+
+    fn any_u128(&mut self) -> u128 {
+        kani::any()
     }
 
     fn bool(&mut self) -> bool {
@@ -119,7 +159,7 @@ impl Source for KaniSource {
 /// The record every concrete driver keeps: the draws of the current case and cover counts.
 #[derive(Default)]
 struct Record {
-    draws: Vec<i64>,
+    draws: Vec<i128>,
     covers: BTreeMap<&'static str, u64>,
 }
 
@@ -176,11 +216,15 @@ impl Exhaustive {
     }
 }
 
-impl Source for Exhaustive {
-    fn bounded_i64(&mut self, lo: i64, hi: i64) -> i64 {
+impl Exhaustive {
+    /// A draw in `lo..=hi` enumerating at most `span` values (all when the range is smaller,
+    /// else the `span / 2` smallest and largest).
+    fn draw(&mut self, lo: i128, hi: i128, span: u64) -> i128 {
         assert!(lo <= hi, "empty range {lo}..={hi}");
-        let size = (i128::from(hi) - i128::from(lo) + 1) as u128;
-        let span = u128::from(2 * self.width);
+        let half = span / 2;
+        // hi − lo + 1 ≤ 2^128 for the ranges used (each within i64/u64); saturate otherwise.
+        let size = (hi.abs_diff(lo)).saturating_add(1);
+        let span = u128::from(span);
         let radix = size.min(span) as u64;
         let digit = match self.digits.get(self.pos) {
             Some(&(d, r)) => {
@@ -193,13 +237,23 @@ impl Source for Exhaustive {
             }
         };
         self.pos += 1;
-        let v = if size <= span || digit < self.width {
-            lo + digit as i64
+        let v = if size <= span || digit < half {
+            lo + i128::from(digit)
         } else {
-            hi - (2 * self.width - 1 - digit) as i64
+            hi - i128::from(2 * half - 1 - digit)
         };
         self.record.draws.push(v);
         v
+    }
+}
+
+impl Source for Exhaustive {
+    fn bounded_i128(&mut self, lo: i128, hi: i128) -> i128 {
+        self.draw(lo, hi, 2 * self.width)
+    }
+
+    fn every_u32(&mut self, lo: u32, hi: u32) -> u32 {
+        self.draw(i128::from(lo), i128::from(hi), u64::from(u32::MAX) + 1) as u32
     }
 
     fn assume(&mut self, cond: bool) -> Outcome {
@@ -239,18 +293,19 @@ impl Random {
 }
 
 impl Source for Random {
-    fn bounded_i64(&mut self, lo: i64, hi: i64) -> i64 {
+    fn bounded_i128(&mut self, lo: i128, hi: i128) -> i128 {
         assert!(lo <= hi, "empty range {lo}..={hi}");
-        let size = (i128::from(hi) - i128::from(lo) + 1) as u128;
+        let size = hi.abs_diff(lo).saturating_add(1);
         let r = self.next_u64();
-        let pick = u128::from(self.next_u64());
+        let pick = (u128::from(self.next_u64()) << 64) | u128::from(self.next_u64());
         let v = match r % 8 {
             0 => {
                 let edges = [lo, lo.saturating_add(1), hi.saturating_sub(1), hi];
                 edges[(pick % 4) as usize].clamp(lo, hi)
             }
-            1 => lo + (pick % size.min(16)) as i64,
-            _ => (i128::from(lo) + (pick % size) as i128) as i64,
+            1 => lo + (pick % size.min(16)) as i128,
+            // lo + offset ≤ hi, computed without overflow.
+            _ => lo.wrapping_add((pick % size) as i128),
         };
         self.record.draws.push(v);
         v
@@ -274,7 +329,7 @@ impl Source for Random {
 pub struct Failure {
     pub message: &'static str,
     /// The values drawn in the failing case, in draw order.
-    pub draws: Vec<i64>,
+    pub draws: Vec<i128>,
     /// 0-based number of the failing case.
     pub case: u64,
 }
@@ -445,6 +500,16 @@ mod tests {
             Ok(())
         });
         assert_eq!(seen, vec![i64::MIN, i64::MIN + 1, i64::MAX - 1, i64::MAX]);
+    }
+
+    #[test]
+    fn small_domains_are_enumerated_whole() {
+        let r = exhaustive(1, 1000, |s| {
+            s.every_u32(0, 178);
+            s.bounded_u32(0, 178);
+            Ok(())
+        });
+        assert_eq!(r.cases, 179 * 2);
     }
 
     #[test]

@@ -1,0 +1,138 @@
+//! Harness `depth_bounds` — G76.DEPTH.LAST, G76.DEPTH.MIN, G78.DEPTHMODE, PRJ.MAXPASS.
+//!
+//! **Property.** For all legal parameters (Δd 1…N, Δdmin 0…N, T = k − d 1…N, degressive or
+//! constant) and every pass limit `limit` ≤ K, iterating the schedule from `first(p)` for up
+//! to K + 1 passes:
+//!
+//! - pass numbers are 1, 2, 3, …; every rough depth is in 1…T (G76.DEPTH.LAST);
+//! - a pass is `last` exactly when its depth is T, and `next` after it is `None`;
+//! - depths never decrease, and every cut (depth minus the previous depth, the first cut
+//!   measured from 0) except the last is ≥ Δdmin (G76.DEPTH.MIN; degressive mode) or exactly
+//!   Δd (G78.DEPTHMODE 0);
+//! - `rough_pass_count(p, limit)` is `Some(c)` where c is the number of passes iterated, when
+//!   c ≤ limit, and `None` exactly when the schedule has more than `limit` passes (PRJ.MAXPASS).
+//!
+//! Whole schedules are unbounded (up to ~10^18 passes for Δdmin = 0), so the iteration stops
+//! after K + 1 passes; since `limit` ≤ K, the count's `None` case is decided by then.
+//! `depth_step_monotone` covers every pass number by induction; this harness adds the
+//! whole-sequence view (cuts, the last depth, the count) over the first K + 1 passes.
+//!
+//! **Kani bounds.** K = [`KANI`]`.max_passes` = 4: the harness loop runs at most K + 1 = 5
+//! times and `rough_pass_count` at most `limit + 1` ≤ 5 steps; `isqrt` loops at most 64 times.
+//! So `#[kani::unwind(65)]` covers every loop. Parameters are symbolic over the full legal
+//! ranges.
+
+use crate::schedule::Schedule;
+use crate::source::{Outcome, Source};
+use crate::{check, cover};
+use cycle_impl::schedule::ScheduleParams;
+use cycle_vocab::params::MAX_LENGTH;
+
+/// The ranges a run draws from.
+#[derive(Clone, Copy, Debug)]
+pub struct Scope {
+    /// Largest Δd, Δdmin, T.
+    pub max_len: i64,
+    /// K: the largest `limit`; the iteration examines K + 1 passes.
+    pub max_passes: u32,
+}
+
+/// What Kani proves: full legal ranges, K = 4.
+pub const KANI: Scope = Scope { max_len: MAX_LENGTH, max_passes: 4 };
+
+/// The harness body (see the module documentation).
+pub fn body<S: Source, Sch: Schedule>(src: &mut S, sch: &Sch, scope: &Scope) -> Outcome {
+    let first_cut = src.bounded_i64(1, scope.max_len);
+    let min_cut = src.bounded_i64(0, scope.max_len);
+    let target = src.bounded_i64(1, scope.max_len);
+    let constant = src.bool();
+    let limit = src.bounded_u32(0, scope.max_passes);
+    let p = ScheduleParams { first_cut, min_cut, target, constant };
+
+    let mut r = sch.first(&p);
+    let mut previous_depth = 0i64;
+    let mut count = 1u32;
+    let mut finished = false;
+    // At most K + 1 passes.
+    while count <= scope.max_passes + 1 {
+        check!(src, r.n == count, "pass numbers are 1, 2, 3, …");
+        check!(src, r.depth >= 1 && r.depth <= target, "G76.DEPTH.LAST: every rough depth lies in 1…k − d");
+        check!(src, r.last == (r.depth == target), "G76.DEPTH.LAST: last exactly at depth k − d");
+        check!(src, r.depth >= previous_depth, "rough depths never decrease");
+        let cut = r.depth - previous_depth;
+        if !r.last {
+            if constant {
+                check!(src, cut == first_cut, "G78.DEPTHMODE 0: every cut but the last is Δd");
+            } else {
+                check!(src, cut >= min_cut, "G76.DEPTH.MIN: every cut but the last is at least Δdmin");
+            }
+        }
+        let next = sch.next(&p, &r);
+        if r.last {
+            check!(src, next.is_none(), "G76.DEPTH.LAST: nothing after the last rough pass");
+            finished = true;
+            break;
+        }
+        check!(src, next.is_some(), "a pass that is not the last has a successor");
+        let Some(n) = next else { return Ok(()) };
+        previous_depth = r.depth;
+        r = n;
+        count += 1;
+    }
+
+    let counted = sch.rough_pass_count(&p, limit);
+    if finished && count <= limit {
+        check!(src, counted == Some(count), "PRJ.MAXPASS: rough_pass_count agrees with iterating");
+    } else {
+        // More than `limit` passes: either finished after `limit`, or not within K + 1 > limit.
+        check!(src, counted.is_none(), "PRJ.MAXPASS: rough_pass_count is None above the limit");
+    }
+
+    cover!(src, finished && count == 1, "a single rough pass");
+    cover!(src, finished && count >= 3, "three or more rough passes");
+    cover!(src, !finished, "more passes than examined");
+    cover!(src, finished && count == limit, "count exactly at the limit");
+    cover!(src, finished && count == limit + 1, "count one above the limit");
+    Ok(())
+}
+
+/// Kani: bounds, cuts and the pass count over the first K + 1 = 5 passes of every legal
+/// schedule. Unwind 65: the harness loop ≤ 5, `rough_pass_count` ≤ 5, `isqrt` ≤ 64 iterations.
+#[cfg(kani)]
+#[kani::proof]
+#[kani::unwind(65)]
+fn depth_bounds() {
+    let _ = body(&mut crate::source::KaniSource, &crate::schedule::Production, &KANI);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::schedule::Production;
+    use crate::source::{exhaustive, random, random_cases};
+
+    /// Every Δd, Δdmin, T ≤ 16, both modes, every limit ≤ 200, iterating up to 201 passes of
+    /// schedules of up to (T/Δd)² = 256 passes: most schedules are examined whole.
+    #[test]
+    fn depth_bounds_exhaustive() {
+        let scope = Scope { max_len: 16, max_passes: 200 };
+        // limit takes its 16 smallest and 16 largest values.
+        let r = exhaustive(16, 2_000_000, |s| body(s, &Production, &scope)).assert_ok();
+        println!("{r}");
+    }
+
+    /// The edges of the legal ranges with K = 64.
+    #[test]
+    fn depth_bounds_exhaustive_edges() {
+        let scope = Scope { max_len: MAX_LENGTH, max_passes: 64 };
+        let r = exhaustive(3, 1_000_000, |s| body(s, &Production, &scope)).assert_ok();
+        println!("{r}");
+    }
+
+    #[test]
+    fn depth_bounds_random() {
+        let scope = Scope { max_len: MAX_LENGTH, max_passes: 200 };
+        let r = random(0x5eed_0002, random_cases(5_000), |s| body(s, &Production, &scope)).assert_ok();
+        println!("{r}");
+    }
+}

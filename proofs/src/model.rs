@@ -1,0 +1,209 @@
+//! The register's arithmetic, restated independently of `cycle-impl` for the harnesses'
+//! expectations: rounded square roots by their bracket (no root is taken), the switch pass of
+//! G76.DEPTH.MIN in closed form, half-up quotients. Loop-free, so Kani needs no unwinding here.
+//! Inputs are within the legal ranges (lengths ≤ N = 999 999 999 < 2^30), where every product
+//! below fits `u128`.
+
+/// Whether `r` is √`n` rounded half up: r − ½ ≤ √n < r + ½. For n = 0 that is r = 0; for
+/// n ≥ 1 (so r ≥ 1) it is r(r − 1) < n ≤ r(r + 1) (squares of half-integers are never integers).
+pub fn is_sqrt_round(r: u128, n: u128) -> bool {
+    if n == 0 {
+        return r == 0;
+    }
+    if r == 0 {
+        return false;
+    }
+    let below = match r.checked_mul(r - 1) {
+        Some(v) => v,
+        None => return false, // r(r − 1) ≥ 2^128 > n
+    };
+    let above_ok = match r.checked_mul(r + 1) {
+        Some(v) => n <= v,
+        None => true,
+    };
+    below < n && above_ok
+}
+
+/// Whether √`n` rounded half up is at least `t` (t ≥ 1): √n ≥ t − ½ ⇔ n > t(t − 1).
+pub fn sqrt_round_at_least(n: u128, t: u128) -> bool {
+    match t.checked_mul(t - 1) {
+        Some(v) => n > v,
+        None => false,
+    }
+}
+
+/// G76.DEPTH.MIN in closed form: the first pass s ≥ 1 at which (√s − √(s−1))·Δd < Δdmin, or
+/// `None` when Δdmin = 0 (no minimum) or s would exceed `u32::MAX`.
+///
+/// The register decides pass n by Δd² − Δdmin² < 0, or (Δd² − Δdmin²)² < 4·Δd²·Δdmin²·(n − 1).
+/// With a = Δd² − Δdmin² ≥ 0 and c = 4·Δd²·Δdmin² > 0 the second form is n − 1 > a²/c, so
+/// s = ⌊a²/c⌋ + 2. (Legal Δd, Δdmin < 2^30: a² < 2^120, c < 2^122.)
+pub fn switch_pass(first_cut: i64, min_cut: i64) -> Option<u32> {
+    if min_cut <= 0 {
+        return None;
+    }
+    let dd2 = (first_cut as u128) * (first_cut as u128);
+    let dm2 = (min_cut as u128) * (min_cut as u128);
+    if dd2 < dm2 {
+        return Some(1);
+    }
+    let a = dd2 - dm2;
+    let c = 4 * dd2 * dm2;
+    let s = (a * a) / c + 2;
+    u32::try_from(s).ok()
+}
+
+/// n·Δd²: the square of the exact depth √n·Δd of G76.DEPTH.1.
+pub fn depth_square(n: u32, first_cut: i64) -> u128 {
+    u128::from(n) * (first_cut as u128) * (first_cut as u128)
+}
+
+/// `num / den` rounded half up (den > 0): ⌊num/den + ½⌋ = ⌊(2·num + den) / (2·den)⌋, the q with
+/// q − ½ ≤ num/den < q + ½. (num < 2^126.)
+pub fn div_round_half_up(num: u128, den: u128) -> u128 {
+    (2 * num + den) / (2 * den)
+}
+
+/// An unsigned 256-bit integer as four 64-bit limbs, least significant first: the harnesses'
+/// own wide arithmetic (schoolbook over limbs), independent of `cycle_impl::fixed::U256`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct W256(pub [u64; 4]);
+
+impl W256 {
+    pub const fn from_u128(v: u128) -> W256 {
+        W256([v as u64, (v >> 64) as u64, 0, 0])
+    }
+
+    /// The exact product of two `u128`.
+    pub fn mul(a: u128, b: u128) -> W256 {
+        let x = [a as u64, (a >> 64) as u64];
+        let y = [b as u64, (b >> 64) as u64];
+        let mut out = [0u64; 4];
+        for (i, &xi) in x.iter().enumerate() {
+            let mut carry = 0u128;
+            for (j, &yj) in y.iter().enumerate() {
+                let cur = u128::from(out[i + j]) + u128::from(xi) * u128::from(yj) + carry;
+                out[i + j] = cur as u64;
+                carry = cur >> 64;
+            }
+            out[i + 2] = carry as u64;
+        }
+        W256(out)
+    }
+
+    /// `self + other`, `None` on overflow past 256 bits.
+    pub fn checked_add(self, other: W256) -> Option<W256> {
+        let mut out = [0u64; 4];
+        let mut carry = 0u128;
+        for (i, o) in out.iter_mut().enumerate() {
+            let cur = u128::from(self.0[i]) + u128::from(other.0[i]) + carry;
+            *o = cur as u64;
+            carry = cur >> 64;
+        }
+        (carry == 0).then_some(W256(out))
+    }
+
+    /// `self · 2^(64·k)` for k ≤ 3 (limbs shifted out are dropped).
+    pub fn shift_limbs(self, k: usize) -> W256 {
+        let mut out = [0u64; 4];
+        out[k..].copy_from_slice(&self.0[..4 - k]);
+        W256(out)
+    }
+
+    /// The high and low 128-bit halves.
+    pub fn halves(self) -> (u128, u128) {
+        (
+            (u128::from(self.0[3]) << 64) | u128::from(self.0[2]),
+            (u128::from(self.0[1]) << 64) | u128::from(self.0[0]),
+        )
+    }
+}
+
+impl PartialOrd for W256 {
+    fn partial_cmp(&self, other: &W256) -> Option<core::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for W256 {
+    fn cmp(&self, other: &W256) -> core::cmp::Ordering {
+        let a = [self.0[3], self.0[2], self.0[1], self.0[0]];
+        let b = [other.0[3], other.0[2], other.0[1], other.0[0]];
+        a.cmp(&b)
+    }
+}
+
+/// Whether `q` is `num / den` rounded half up (den ≥ 1): q − ½ ≤ num/den < q + ½, i.e.
+/// 2·q·den ≤ 2·num + den and 2·num < 2·q·den + den, decided in 256 bits.
+pub fn is_div_round(q: u128, num: u128, den: u128) -> bool {
+    let qd = W256::mul(q, den);
+    let two_qd = qd.checked_add(qd);
+    let two_num = W256::mul(num, 2);
+    let d = W256::from_u128(den);
+    // 2·num + den < 2^130 always fits. 2·q·den ≥ 2^256 > 2·num + den means q is too large.
+    match (two_qd, two_num.checked_add(d)) {
+        (Some(two_qd), Some(rhs)) => two_qd <= rhs && two_qd.checked_add(d).is_some_and(|hi| two_num < hi),
+        _ => false,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sqrt_bracket_matches_float_for_small_values() {
+        for n in 0u128..20_000 {
+            let r = ((n as f64).sqrt() + 0.5).floor() as u128;
+            assert!(is_sqrt_round(r, n), "{n}");
+            assert!(!is_sqrt_round(r + 1, n) && (r == 0 || !is_sqrt_round(r - 1, n)), "{n}");
+            for t in 1..200u128 {
+                assert_eq!(sqrt_round_at_least(n, t), r >= t, "{n} {t}");
+            }
+        }
+        assert!(is_sqrt_round(1u128 << 64, u128::MAX));
+    }
+
+    #[test]
+    fn switch_pass_matches_the_definition() {
+        for dd in 1..=40i64 {
+            for dmin in 0..=40i64 {
+                let direct = (1u32..200).find(|&n| {
+                    let n = f64::from(n);
+                    dmin > 0 && ((n.sqrt() - (n - 1.0).sqrt()) * dd as f64) < dmin as f64 - 1e-12
+                });
+                let got = switch_pass(dd, dmin).filter(|&s| s < 200);
+                assert_eq!(got, direct, "dd {dd} dmin {dmin}");
+            }
+        }
+        // (√13 − √12)·700 = 99.0 < 100 ≤ (√12 − √11)·700 = 103.2.
+        assert_eq!(switch_pass(700, 100), Some(13));
+        assert_eq!(switch_pass(999_999_999, 1), None);
+    }
+
+    #[test]
+    fn wide_arithmetic() {
+        assert_eq!(W256::mul(u128::MAX, u128::MAX).halves(), (u128::MAX - 1, 1));
+        assert_eq!(W256::mul(1u128 << 127, 2).halves(), (1, 0));
+        assert_eq!(W256::mul(123_456_789, 987_654_321).halves(), (0, 123_456_789 * 987_654_321));
+        assert!(W256::from_u128(5) < W256::from_u128(1).shift_limbs(2));
+        assert_eq!(W256::from_u128(u128::MAX).checked_add(W256::from_u128(1)).unwrap().halves(), (1, 0));
+        assert_eq!(W256([0, 0, 0, u64::MAX]).checked_add(W256([0, 0, 0, 1])), None);
+        for (q, num, den, ok) in [(3, 5, 2, true), (2, 5, 2, false), (2, 7, 3, true), (3, 8, 3, true), (0, 1, 3, true), (1, 1, 2, true)] {
+            assert_eq!(is_div_round(q, num, den), ok, "{q} {num}/{den}");
+        }
+        assert!(is_div_round(1, u128::MAX, u128::MAX));
+        assert!(!is_div_round(u128::MAX, u128::MAX, 3));
+    }
+
+    #[test]
+    fn half_up_quotients() {
+        for num in 0u128..300 {
+            for den in 1u128..40 {
+                let q = div_round_half_up(num, den);
+                assert!((2 * q).saturating_sub(1) * den <= 2 * num || q == 0, "{num}/{den}");
+                assert!(2 * num < (2 * q + 1) * den, "{num}/{den}");
+            }
+        }
+    }
+}
