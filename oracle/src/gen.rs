@@ -52,7 +52,7 @@ impl fmt::Debug for Case {
 }
 
 /// How many knobs a structured case draws from.
-pub const KNOBS: usize = 160;
+pub const KNOBS: usize = 256;
 
 /// The knobs: `KNOBS` random `u32`s.
 pub fn knobs() -> impl Strategy<Value = Vec<u32>> {
@@ -72,7 +72,7 @@ pub fn multipass() -> impl Strategy<Value = Case> {
 /// Random bytes, word soup, corpus mutants.
 pub fn garbage() -> impl Strategy<Value = Case> {
     let bytes = (proptest::collection::vec(any::<u8>(), 0..200), knobs()).prop_map(|(program, k)| {
-        let config = config(&mut Dice::new(&k), false);
+        let config = config(&mut Dice::new(&k).fork(48), false);
         Case { family: "bytes", program, config }
     });
     let soup = knobs().prop_map(|k| build_soup(&mut Dice::new(&k)));
@@ -141,6 +141,17 @@ impl<'a> Dice<'a> {
             x -= w;
         }
         0
+    }
+
+    /// A window of the next `n` knobs, as dice of its own; these dice advance by `n` whatever
+    /// the window's user draws. Builders give each part of a program (configuration, start,
+    /// each block) its own window, so that a decision that draws more or fewer knobs — as
+    /// shrinking changes decisions — does not shift the knobs of every later part.
+    pub fn fork(&mut self, n: usize) -> Dice<'a> {
+        let from = self.at.min(self.knobs.len());
+        let to = (self.at + n).min(self.knobs.len());
+        self.at += n;
+        Dice { knobs: &self.knobs[from..to], at: 0 }
     }
 
     /// One of `items` (the first for the knob 0).
@@ -385,12 +396,13 @@ fn tail(w: &mut Writer, d: &mut Dice) {
 // ---------------------------------------------------------------------------------------------
 // G92
 
-fn build_g92(d: &mut Dice) -> Case {
-    let mut config = config(d, false);
+fn build_g92(dice: &mut Dice) -> Case {
+    let mut config = config(&mut dice.fork(48), false);
     let grid = config.grid;
     let dec = grid.decimals();
     let u = unit(grid);
-    let mut w = Writer::new(d);
+    let mut w = Writer::new(&mut dice.fork(2));
+    let d = &mut dice.fork(12);
 
     // The start point A, by G00 (mostly) or by the configuration.
     let mut ax = d.range(4 * u, 120 * u);
@@ -409,6 +421,7 @@ fn build_g92(d: &mut Dice) -> Case {
     }
 
     // The lead, in the first G92 block (mostly), in a block of its own before, or missing.
+    let d = &mut dice.fork(10);
     let lead = lead(d, grid);
     let lead_where = d.weighted(&[88, 8, 4]); // 0 in the G92 block, 1 before, 2 missing
     if lead_where == 1 {
@@ -420,6 +433,7 @@ fn build_g92(d: &mut Dice) -> Case {
     let mut end_x = ax;
     let mut end_z = az;
     for n in 0..cycles {
+        let d = &mut dice.fork(32);
         let mut words: Vec<(char, String)> = Vec::new();
         let kind = if n == 0 { 0 } else { d.weighted(&[55, 12, 10, 8, 8, 7]) };
         match kind {
@@ -522,7 +536,7 @@ fn build_g92(d: &mut Dice) -> Case {
         }
         w.block(&words);
     }
-    tail(&mut w, d);
+    tail(&mut w, &mut dice.fork(2));
     Case { family: "g92", program: w.out.into_bytes(), config }
 }
 
@@ -555,15 +569,16 @@ fn l_word(w: &mut Writer, d: &mut Dice, words: &mut Vec<(char, String)>) {
 // ---------------------------------------------------------------------------------------------
 // G76 / G78 / FANUC G76
 
-fn build_multipass(d: &mut Dice) -> Case {
-    let which = d.weighted(&[50, 35, 15]); // G76 gsk, G78, G76 fanuc
+fn build_multipass(dice: &mut Dice) -> Case {
+    let which = dice.weighted(&[50, 35, 15]); // G76 gsk, G78, G76 fanuc
     let fanuc = which == 2;
     let code = if which == 1 { "78" } else { "76" };
-    let mut config = config(d, fanuc);
+    let mut config = config(&mut dice.fork(48), fanuc);
     let grid = config.grid;
     let dec = grid.decimals();
     let u = unit(grid);
-    let mut w = Writer::new(d);
+    let mut w = Writer::new(&mut dice.fork(2));
+    let d = &mut dice.fork(40);
 
     // Thread geometry (radius values k, i, d; X on diameter).
     let k = match d.weighted(&[80, 10, 10]) {
@@ -635,6 +650,7 @@ fn build_multipass(d: &mut Dice) -> Case {
     let travel = len.abs().max(1);
 
     // Start point.
+    let d = &mut dice.fork(2);
     if !d.chance(10) {
         let (x, z) = (w.length(ax, dec), w.length(az, dec));
         w.block(&[('G', "00".to_string()), ('X', x), ('Z', z)]);
@@ -644,6 +660,7 @@ fn build_multipass(d: &mut Dice) -> Case {
     }
 
     // First block: P(m)(r)(a) or P(m)(mode)(a), Q(Δdmin), R(d), D, L, E.
+    let d = &mut dice.fork(40);
     let mut first: Vec<(char, String)> = vec![('G', code.to_string())];
     if !d.chance(10) {
         let m = match d.weighted(&[88, 3, 4, 5]) {
@@ -723,6 +740,7 @@ fn build_multipass(d: &mut Dice) -> Case {
     }
 
     // Second block: X(U) Z(W) R(i) P(k) Q(Δd) J K F(I).
+    let d = &mut dice.fork(32);
     let mut second: Vec<(char, String)> = vec![('G', code.to_string())];
     second.push(axis(&mut w, d, 'X', 'U', dx, ax, dec));
     if len != 0 || d.chance(50) {
@@ -762,6 +780,7 @@ fn build_multipass(d: &mut Dice) -> Case {
     w.block(&second);
 
     // Sometimes a second thread with the kept first block, or a G00 back.
+    let d = &mut dice.fork(8);
     if d.chance(25) {
         let (x, z) = (w.length(ax, dec), w.length(az, dec));
         w.block(&[('G', "0".to_string()), ('X', x), ('Z', z)]);
@@ -776,7 +795,7 @@ fn build_multipass(d: &mut Dice) -> Case {
             w.block(&again);
         }
     }
-    tail(&mut w, d);
+    tail(&mut w, &mut dice.fork(2));
     let family = match which {
         0 => "g76",
         1 => "g78",
@@ -792,7 +811,7 @@ fn build_multipass(d: &mut Dice) -> Case {
 /// comments (closed or not), `%`, and the cycle codes, in random order.
 fn build_soup(d: &mut Dice) -> Case {
     let fanuc = d.chance(20);
-    let config = config(d, fanuc);
+    let config = config(&mut d.fork(48), fanuc);
     let mut out = String::new();
     let tokens = d.range(1, 40);
     for _ in 0..tokens {
@@ -860,7 +879,7 @@ fn build_mutant(d: &mut Dice) -> Case {
         p.config()
     } else {
         let fanuc = d.chance(20);
-        config(d, fanuc)
+        config(&mut d.fork(48), fanuc)
     };
     Case { family: "mutant", program: bytes, config }
 }
