@@ -15,3 +15,5 @@ pub mod depth_bounds;
 pub mod depth_step_monotone;
 pub mod fixed_point;
 pub mod mutation;
+pub mod expander_envelope;
+pub mod g92_pullout;
