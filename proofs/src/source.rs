@@ -431,9 +431,21 @@ pub fn exhaustive(width: u64, budget: u64, mut body: impl FnMut(&mut Exhaustive)
     report
 }
 
-/// Random cases per random driver: `CYCLECHECK_PROOF_CASES`, else `default`.
-pub fn random_cases(default: u64) -> u64 {
-    std::env::var("CYCLECHECK_PROOF_CASES").ok().and_then(|v| v.trim().parse().ok()).unwrap_or(default)
+/// The base number of random cases: `CYCLECHECK_PROOF_CASES`, else this.
+///
+/// Chosen so that all random drivers together take about 3 s of one core in the debug test
+/// profile here (measured; the budget is 30 s on 2 cores).
+pub const DEFAULT_RANDOM_CASES: u64 = 1_000_000;
+
+/// Random cases for one driver: the base (`CYCLECHECK_PROOF_CASES`, default
+/// [`DEFAULT_RANDOM_CASES`]) divided by the driver's `divisor` (1 for cheap bodies, 2 or 4 for
+/// those that run whole schedules or the expander), at least 1.
+pub fn random_cases(divisor: u64) -> u64 {
+    let base = std::env::var("CYCLECHECK_PROOF_CASES")
+        .ok()
+        .and_then(|v| v.trim().parse().ok())
+        .unwrap_or(DEFAULT_RANDOM_CASES);
+    (base / divisor.max(1)).max(1)
 }
 
 /// Runs `body` on `cases` random cases from `seed`; stops at the first failure.
