@@ -7,7 +7,10 @@
 //! - is `None` exactly when `prev` is the last pass;
 //! - otherwise is pass n + 1 with depth ≥ `prev.depth`, strictly greater when Δdmin ≥ 1
 //!   (or in constant mode), depth ≤ T, `last` exactly when depth = T;
-//! - and equals the register's closed form at n + 1 (below).
+//! - and equals the register's closed form at n + 1 (below), including the rule it names
+//!   (G76.DEPTH.1 before the switch, G76.DEPTH.MIN from it, G78.DEPTHMODE in constant mode,
+//!   G76.DEPTH.LAST when clamped) — so the whole `Rough` is determined, which the induction
+//!   below needs.
 //!
 //! **How `prev` at an arbitrary n is built without iterating.** The register's closed form of
 //! pass n (docs/INTERPRETATION.md, "Depth schedule"): with s the switch pass of G76.DEPTH.MIN
@@ -20,7 +23,8 @@
 //! √n·Δd (no root taken: r(r−1) < n·Δd² ≤ r(r+1)). From the switch on, pass n is the closed
 //! form. Reachability (pass n − 1 was not the last) is an assumption.
 //!
-//! **Induction.** Base: pass 1 is `first(p)`, checked against the closed form (case n = 1).
+//! **Induction.** Base: pass 1 is `first(p)`, checked against the closed form (case n = 1, in
+//! every regime: before the switch, from the switch when Δd < Δdmin, constant).
 //! Step: if the API's pass n equals the closed form at n, the API's pass n + 1 is
 //! `next(p, closed form at n)`, which this harness checks against the closed form at n + 1
 //! and for monotonicity. Hence every reachable pass equals the closed form, and every step of
@@ -61,20 +65,28 @@ fn api_pass<Sch: Schedule>(sch: &Sch, p: &ScheduleParams, n: u32) -> Option<Roug
     }
 }
 
-/// The register's pass n before the switch: `depth` is round(√n·Δd) clamped to T.
+/// The register's pass n before the switch: `depth` is round(√n·Δd) clamped to T, named
+/// G76.DEPTH.1 (G76.DEPTH.LAST when clamped).
 fn matches_sqrt_form(r: &Rough, n: u32, p: &ScheduleParams) -> bool {
     let sq = depth_square(n, p.first_cut);
     let t = p.target as u128;
     let reaches = sqrt_round_at_least(sq, t);
     r.n == n
         && r.last == reaches
-        && if reaches { r.depth == p.target } else { r.depth >= 0 && is_sqrt_round(r.depth as u128, sq) }
+        && if reaches {
+            r.depth == p.target && r.rule == Rule::G76DepthLast
+        } else {
+            r.depth >= 0 && is_sqrt_round(r.depth as u128, sq) && r.rule == Rule::G76Depth1
+        }
 }
 
-/// The register's pass with exact (integer) depth `exact`: clamped to T.
-fn matches_exact(r: &Rough, n: u32, exact: u128, t: i64) -> bool {
+/// The register's pass with exact (integer) depth `exact`: clamped to T; named `rule`
+/// (G76.DEPTH.LAST when clamped).
+fn matches_exact(r: &Rough, n: u32, exact: u128, t: i64, rule: Rule) -> bool {
     let reaches = exact >= t as u128;
-    r.n == n && r.last == reaches && if reaches { r.depth == t } else { r.depth as u128 == exact }
+    r.n == n
+        && r.last == reaches
+        && if reaches { r.depth == t && r.rule == Rule::G76DepthLast } else { r.depth as u128 == exact && r.rule == rule }
 }
 
 /// The harness body (see the module documentation).
@@ -107,7 +119,7 @@ pub fn body<S: Source, Sch: Schedule>(src: &mut S, sch: &Sch, scope: &Scope) -> 
         let r = api_pass(sch, &p, n);
         check!(src, r.is_some(), "the API makes pass n from n alone (constant mode)");
         let r = r.unwrap_or(Rough { n, depth: 0, last: false, rule: Rule::G78DepthMode });
-        check!(src, matches_exact(&r, n, u128::from(n) * first_cut as u128, target), "G78.DEPTHMODE: pass n has depth n·Δd clamped to T");
+        check!(src, matches_exact(&r, n, u128::from(n) * first_cut as u128, target, Rule::G78DepthMode), "G78.DEPTHMODE: pass n has depth n·Δd clamped to T");
         r
     } else if s.is_none_or(|s| n < s) {
         // Before the switch: round(√n·Δd), from the API, checked against the bracket.
@@ -139,7 +151,12 @@ pub fn body<S: Source, Sch: Schedule>(src: &mut S, sch: &Sch, scope: &Scope) -> 
         let last = exact >= t;
         let depth = if last { target } else { exact as i64 };
         let rule = if last { Rule::G76DepthLast } else { Rule::G76DepthMin };
-        Rough { n, depth, last, rule }
+        let r = Rough { n, depth, last, rule };
+        if n == 1 {
+            // The induction's base when the minimum applies from the first pass (Δd < Δdmin).
+            check!(src, sch.first(&p) == r, "G76.DEPTH.MIN: with Δd < Δdmin the first pass is Δdmin deep");
+        }
+        r
     };
 
     let next = sch.next(&p, &prev);
@@ -162,7 +179,7 @@ pub fn body<S: Source, Sch: Schedule>(src: &mut S, sch: &Sch, scope: &Scope) -> 
     // The closed form at n + 1.
     let m = n + 1;
     let ok = if constant {
-        matches_exact(&next, m, u128::from(m) * first_cut as u128, target)
+        matches_exact(&next, m, u128::from(m) * first_cut as u128, target, Rule::G78DepthMode)
     } else {
         match s {
             Some(s) if m >= s => {
@@ -175,12 +192,12 @@ pub fn body<S: Source, Sch: Schedule>(src: &mut S, sch: &Sch, scope: &Scope) -> 
                     // prev (= pass m − 1 ≥ s) is base + (m − 1 − s + 1)·Δdmin.
                     (prev.depth as u128) - u128::from(m - s) * min_cut as u128
                 };
-                matches_exact(&next, m, base + u128::from(m - s + 1) * min_cut as u128, target)
+                matches_exact(&next, m, base + u128::from(m - s + 1) * min_cut as u128, target, Rule::G76DepthMin)
             }
             _ => matches_sqrt_form(&next, m, &p),
         }
     };
-    check!(src, ok, "G76.DEPTH.1/.MIN/.LAST, G78.DEPTHMODE: pass n + 1 is the register's closed form");
+    check!(src, ok, "G76.DEPTH.1/.MIN/.LAST, G78.DEPTHMODE: pass n + 1 is the register's closed form, naming its rule");
 
     cover!(src, !constant && s.is_some_and(|s| m == s), "the step into the minimum-cut regime");
     cover!(src, !constant && s.is_some_and(|s| m > s), "a step within the minimum-cut regime");
