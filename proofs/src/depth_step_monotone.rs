@@ -14,7 +14,7 @@
 //!
 //! **How `prev` at an arbitrary n is built without iterating.** The register's closed form of
 //! pass n (docs/INTERPRETATION.md, "Depth schedule"): with s the switch pass of G76.DEPTH.MIN
-//! ([`model::switch_pass`], closed form, computed here independently), the exact depth is
+//! ([`crate::model::switch_pass`], closed form, computed here independently), the exact depth is
 //! √n·Δd for n < s and √(s−1)·Δd + (n − s + 1)·Δdmin from s on (n·Δd in constant mode), rounded
 //! half up, clamped to T where it reaches T. Before the switch (and in constant mode)
 //! `cycle_impl::schedule::next` depends on `prev.n` only (documented: "before the switch the

@@ -5,12 +5,12 @@
 //! **Properties** (one branch of the body each; Kani explores all of them):
 //!
 //! 0. `isqrt(n)`, any `u128`: r² ≤ n < (r + 1)². `sqrt_round(n)`: r − ½ ≤ √n < r + ½, decided
-//!    in integers as r(r − 1) < n ≤ r(r + 1) ([`model::is_sqrt_round`]).
+//!    in integers as r(r − 1) < n ≤ r(r + 1) ([`crate::model::is_sqrt_round`]).
 //! 1. `div_round(num, den)`, any `u128`s: 0 for den = 0, else q − ½ ≤ num/den < q + ½, decided
-//!    in our own 256-bit arithmetic ([`model::is_div_round`]).
+//!    in our own 256-bit arithmetic ([`crate::model::is_div_round`]).
 //! 2. `div_round_signed(num, den)`, any `i128`s (including `i128::MIN`): magnitude as in 1,
 //!    sign of num/den (half away from zero), no panic.
-//! 3. `mul_wide(a, b)`, any `u128`s: equals our own schoolbook product ([`model::W256`]).
+//! 3. `mul_wide(a, b)`, any `u128`s: equals our own schoolbook product ([`crate::model::W256`]).
 //! 4. `mul_tan(δ, h)` for every legal length δ ≤ N and every table index h ≤ 178 (0°…89° in
 //!    half degrees): the table decides the rounding (`mul_tan_checked`'s flag); the result is
 //!    δ·tan rounded half up for every tangent in the table's enclosure [L, L + 2^-128)

@@ -1,7 +1,7 @@
 //! Where a harness body gets its values, and how its verdicts are reported.
 //!
 //! One body, three uses: every harness body is generic over [`Source`]. Under Kani,
-//! [`KaniSource`] makes each draw symbolic (`kani::any` + `kani::assume`), so one run of the body
+//! `KaniSource` makes each draw symbolic (`kani::any` + `kani::assume`), so one run of the body
 //! covers every value. Under `cargo test`, [`Exhaustive`] enumerates every combination of draws
 //! within a small scope (an odometer over the draws), and [`Random`] samples the full legal
 //! ranges with a fixed-seed xorshift generator.
