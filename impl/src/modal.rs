@@ -136,7 +136,10 @@ impl Machine {
         // (2) allowed words, alphabetically.
         let ok = allowed(kind, self.config.dialect);
         if let Some(l) = b.letters().find(|l| !ok.contains(l) && !COMMON.contains(l)) {
-            return Err(at(l).alarm(AlarmCode::WordNotAllowed, Rule::PrjWord));
+            // A GSK word that F76.FORMAT leaves out is refused by that format; any other by PRJ.WORD.
+            let gsk_only = allowed(kind, Dialect::Gsk).contains(&l);
+            let rule = if self.config.dialect == Dialect::Fanuc && gsk_only { Rule::F76Format } else { Rule::PrjWord };
+            return Err(at(l).alarm(AlarmCode::WordNotAllowed, rule));
         }
         // (3) values, alphabetically.
         let mut v = Vals::default();

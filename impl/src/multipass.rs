@@ -224,7 +224,12 @@ pub fn cycle(
     }
     let w = sat(i128::from(sec.d.1) - i128::from(a.1));
     if w == 0 {
-        return Err(alarm(AlarmCode::Geometry, b'Z', Rule::G76Format));
+        // G76.FORMAT / G78.FORMAT: each code's own format rule names the missing Z travel.
+        let rule = match code {
+            Code::G76 => Rule::G76Format,
+            Code::G78 => Rule::G78Format,
+        };
+        return Err(alarm(AlarmCode::Geometry, b'Z', rule));
     }
     // C.x = D.x + i (radius); s = sign(A.x − C.x).
     let cx = i128::from(sec.d.0) + 2 * i128::from(sec.i);

@@ -405,6 +405,8 @@ fn check_order() {
     assert_eq!(g76("X33.8 Z-60 P0.1 Q0.7 F4"), alarm(AlarmCode::OutOfRange, Some(b'R'), Rule::G76DepthLast, 3));
     assert_eq!(g76("X33.8 Z10 P0.1 Q0.7 F4"), alarm(AlarmCode::OutOfRange, Some(b'R'), Rule::G76DepthLast, 3));
     assert_eq!(g76("X33.8 Z10 P2.4 Q0.7 F4"), alarm(AlarmCode::Geometry, Some(b'Z'), Rule::G76Format, 3));
+    let g78 = expand("G0 X60 Z10\nG78 P010060 Q0.1 R0.1\nG78 X33.8 Z10 P2.4 Q0.7 F4\n", c).alarm;
+    assert_eq!(g78, alarm(AlarmCode::Geometry, Some(b'Z'), Rule::G78Format, 3));
     assert_eq!(g76("X60 Z-60 P2.4 Q0.7 F4"), alarm(AlarmCode::Geometry, Some(b'X'), Rule::ComSide, 3));
     assert_eq!(g76("X58 Z-60 P2.4 Q0.7 F4"), alarm(AlarmCode::Geometry, Some(b'X'), Rule::ComPoints, 3));
     assert_eq!(g76("X55.2 Z-60 P2.4 Q0.7 F4 J1"), None); // A exactly at B is allowed
@@ -428,8 +430,8 @@ fn fanuc_dialect() {
     let f = fanuc();
     let a = |src: &str| expand(src, f).alarm;
     assert_eq!(a("G78 P010060"), alarm(AlarmCode::UnsupportedCode, Some(b'G'), Rule::PrjDialect, 1));
-    assert_eq!(a("G76 P010060 L2"), alarm(AlarmCode::WordNotAllowed, Some(b'L'), Rule::PrjWord, 1));
-    assert_eq!(a("G76 X1 Z1 K1"), alarm(AlarmCode::WordNotAllowed, Some(b'K'), Rule::PrjWord, 1));
+    assert_eq!(a("G76 P010060 L2"), alarm(AlarmCode::WordNotAllowed, Some(b'L'), Rule::F76Format, 1));
+    assert_eq!(a("G76 X1 Z1 K1"), alarm(AlarmCode::WordNotAllowed, Some(b'K'), Rule::F76Format, 1));
     assert_eq!(a("G76 P010045"), alarm(AlarmCode::OutOfRange, Some(b'P'), Rule::F76Format, 1));
     assert_eq!(a("G76 P010029"), None);
 }
