@@ -1,0 +1,188 @@
+//! Performance of the production expander (issue: performance, measured against the limit).
+//!
+//! For each case, three measurements over the same trace, all reported as moves per second
+//! (criterion throughput in elements = moves):
+//! - `baseline`: writes the case's events, already computed, into a preallocated buffer — the
+//!   memory-bound limit of producing that many events of that size;
+//! - `impl`: the production expander streaming the program into the same kind of buffer;
+//! - `spec`: the executable reference expanding the program (owned trace).
+//!
+//! After criterion's own output, a table prints each case's figures as ratios (impl / baseline,
+//! impl / spec), the time per move and the time to the first event (latency). The README's table
+//! is copied from that output.
+
+use criterion::{black_box, BenchmarkId, Criterion, Throughput};
+use cycle_impl::Expander;
+use cycle_vocab::{Config, Event};
+use std::time::{Duration, Instant};
+
+/// One benchmark case: a program, its configuration, and the figures measured for it.
+struct Case {
+    name: String,
+    program: String,
+    config: Config,
+}
+
+/// G92 with `n` modal repeats (one pass each, G92.MODAL).
+fn g92(n: usize) -> Case {
+    let mut p = String::from("G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\n");
+    for i in 1..n {
+        let x = 58_700 - (i % 500) as i64; // increments, 0.001 mm
+        p.push_str(&format!("X{}.{:03}\n", x / 1000, x % 1000));
+    }
+    Case { name: format!("g92/{n}_passes"), program: p, config: Config::default() }
+}
+
+/// G76 with Δdmin = 0 and Δd = 10 increments: about (T/10)² rough passes for T = k − d.
+fn g76(target_passes: u32) -> Case {
+    let t = (10.0 * (target_passes as f64).sqrt()).round() as i64; // radius increments
+    let k = t + 100; // d = 0.1 mm
+    let p = format!(
+        "G0 X40 Z5\nG76 P011060 Q0 R0.1\nG76 X27.4 Z-20 P{}.{:03} Q0.01 F2\n",
+        k / 1000,
+        k % 1000
+    );
+    Case { name: format!("g76/{target_passes}_target"), program: p, config: Config::default() }
+}
+
+/// G78 constant depth (mode 3, depth mode 0): T/Δd rough passes, Δd = 1 increment.
+fn g78(passes: i64) -> Case {
+    let k = passes + 50;
+    let p = format!(
+        "G0 X40 Z5\nG78 P010360 Q0 R0.05 D0\nG78 X27.4 Z-20 P{}.{:03} Q0.001 F2\n",
+        k / 1000,
+        k % 1000
+    );
+    Case { name: format!("g78/{passes}_passes"), program: p, config: Config::default() }
+}
+
+/// The hardest legal inputs: the largest lengths of the grid, multi-start, a Δd = Δdmin tie,
+/// a steep taper, 99 spring passes, seven starts: 9 086 thread cuts, near the bound.
+fn extreme() -> Case {
+    let p = "G0 X999999.999 Z999999.999\nG76 P996060 Q0.5 R0.5 L7\n\
+             G76 X-999999.999 Z-999999.999 R-1000 P600 Q0.5 F9999\n";
+    Case { name: "g76/extreme_ranges".into(), program: p.into(), config: Config::default() }
+}
+
+fn cases() -> Vec<Case> {
+    let mut v = vec![g92(1), g92(100), g92(10_000)];
+    for n in [1, 10, 100, 1_000, 9_900] {
+        v.push(g76(n));
+    }
+    for n in [1, 100, 9_900] {
+        v.push(g78(n));
+    }
+    v.push(extreme());
+    v
+}
+
+/// The case's trace from the production expander: its events, checked to end without alarm.
+fn events(case: &Case) -> Vec<Event> {
+    let mut out = Vec::new();
+    for item in Expander::new(case.program.as_bytes(), case.config) {
+        match item {
+            Ok(e) => out.push(e),
+            Err(a) => panic!("bench case {} alarms: {a:?}", case.name),
+        }
+    }
+    out
+}
+
+fn impl_into(buffer: &mut Vec<Event>, case: &Case) {
+    buffer.clear();
+    for e in Expander::new(case.program.as_bytes(), case.config).flatten() {
+        buffer.push(e);
+    }
+}
+
+fn baseline_into(buffer: &mut Vec<Event>, events: &[Event]) {
+    buffer.clear();
+    for e in events {
+        buffer.push(black_box(*e));
+    }
+}
+
+fn bench(c: &mut Criterion, cases: &[Case]) {
+    for case in cases {
+        let events = events(case);
+        let mut group = c.benchmark_group(&case.name);
+        group.throughput(Throughput::Elements(events.len() as u64));
+        group.sample_size(20).measurement_time(Duration::from_secs(2)).warm_up_time(Duration::from_millis(500));
+        let mut buffer = Vec::with_capacity(events.len());
+        group.bench_function(BenchmarkId::from_parameter("baseline"), |b| {
+            b.iter(|| baseline_into(&mut buffer, black_box(&events)))
+        });
+        group.bench_function(BenchmarkId::from_parameter("impl"), |b| b.iter(|| impl_into(&mut buffer, black_box(case))));
+        group.bench_function(BenchmarkId::from_parameter("spec"), |b| {
+            b.iter(|| cycle_spec::expand(black_box(case.program.as_bytes()), &case.config))
+        });
+        group.finish();
+    }
+}
+
+/// Median of `runs` timings of `f`, each repeated until it lasts at least 2 ms.
+fn median_ns(runs: usize, mut f: impl FnMut()) -> f64 {
+    let mut reps = 1u32;
+    loop {
+        let t = Instant::now();
+        for _ in 0..reps {
+            f();
+        }
+        if t.elapsed() >= Duration::from_millis(2) || reps >= 1 << 20 {
+            break;
+        }
+        reps *= 2;
+    }
+    let mut v: Vec<f64> = (0..runs)
+        .map(|_| {
+            let t = Instant::now();
+            for _ in 0..reps {
+                f();
+            }
+            t.elapsed().as_nanos() as f64 / reps as f64
+        })
+        .collect();
+    v.sort_by(|a, b| a.total_cmp(b));
+    v[runs / 2]
+}
+
+/// The summary table: ratios measured in this run (medians of 15 runs per figure).
+fn table(cases: &[Case]) {
+    println!("\n## cyclecheck expander figures (this run)\n");
+    println!("| case | events | impl Mev/s | baseline Mev/s | spec Mev/s | impl/baseline | impl/spec | ns/event | first event ns |");
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|");
+    for case in cases {
+        let events = events(case);
+        let n = events.len() as f64;
+        let mut buffer = Vec::with_capacity(events.len());
+        let base = median_ns(15, || baseline_into(&mut buffer, black_box(&events)));
+        let imp = median_ns(15, || impl_into(&mut buffer, black_box(case)));
+        let spec = median_ns(15, || {
+            black_box(cycle_spec::expand(black_box(case.program.as_bytes()), &case.config));
+        });
+        let first = median_ns(15, || {
+            black_box(Expander::new(black_box(case.program.as_bytes()), case.config).next());
+        });
+        let rate = |ns: f64| n / ns * 1e3; // events per ns → M events per s
+        println!(
+            "| {} | {} | {:.1} | {:.1} | {:.2} | {:.2} | {:.0} | {:.1} | {:.0} |",
+            case.name,
+            events.len(),
+            rate(imp),
+            rate(base),
+            rate(spec),
+            base / imp,
+            spec / imp,
+            imp / n,
+            first
+        );
+    }
+}
+
+fn main() {
+    let cases = cases();
+    let mut c = Criterion::default().configure_from_args();
+    bench(&mut c, &cases);
+    c.final_summary();
+    table(&cases);
+}

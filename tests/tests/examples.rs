@@ -1,0 +1,160 @@
+//! The manuals' examples and one program per feature, expanded by the reference spec and
+//! snapshotted as canonical G-code (insta), with the production expander checked against the
+//! spec by the conformance relation on each. Rule IDs: G92.EXAMPLE, G76.EXAMPLE, G78.EXAMPLE,
+//! F76.EX1, F76.EX2, F76.MICRONS, COM.MULTISTART, G76.MODE, G78.MODE, G78.DEPTHMODE, COM.UNITS.
+
+use cycle_oracle::conformance;
+use cycle_vocab::text::Trace;
+use cycle_vocab::{AlarmCode, Config, Dialect, Event, Grid, Increment, MoveKind, PassKind, Rule, Units};
+
+fn gsk() -> Config {
+    Config::default()
+}
+
+fn fanuc() -> Config {
+    Config { dialect: Dialect::Fanuc, ..Config::default() }
+}
+
+fn inch() -> Config {
+    Config { grid: Grid { units: Units::Inch, increment: Increment::Isb }, ..Config::default() }
+}
+
+/// Expands with both engines, requires them to conform, and returns the spec's trace.
+fn expand_both(name: &str, program: &str, config: Config) -> Trace {
+    let spec = cycle_spec::expand(program.as_bytes(), &config);
+    let imp = Trace::collect(config.grid, cycle_impl::Expander::new(program.as_bytes(), config));
+    if let Err(d) = conformance::check(&spec, &imp) {
+        panic!("{name}: the production expander diverges from the spec\n{d}");
+    }
+    spec
+}
+
+macro_rules! snapshot {
+    ($test:ident, $path:literal, $config:expr) => {
+        #[test]
+        fn $test() {
+            let program = include_str!($path);
+            let trace = expand_both(stringify!($test), program, $config);
+            insta::with_settings!({ description => program, omit_expression => true }, {
+                insta::assert_snapshot!(stringify!($test), trace.to_gcode());
+            });
+        }
+    };
+}
+
+// The manuals' examples (corpus/).
+snapshot!(g92_example, "../../corpus/g92_example.nc", gsk());
+snapshot!(g76_example, "../../corpus/g76_example.nc", gsk());
+snapshot!(g78_example, "../../corpus/g78_example.nc", gsk());
+snapshot!(f76_ex1, "../../corpus/f76_ex1.nc", gsk());
+snapshot!(f76_ex1_microns, "../../corpus/f76_ex1_microns.nc", fanuc());
+snapshot!(f76_ex2, "../../corpus/f76_ex2.nc", gsk());
+
+// One program per feature (tests/programs/).
+snapshot!(g92_taper, "../programs/g92_taper.nc", gsk());
+snapshot!(g92_internal, "../programs/g92_internal.nc", gsk());
+snapshot!(g92_inch, "../programs/g92_inch.nc", inch());
+snapshot!(g92_multistart, "../programs/g92_multistart.nc", gsk());
+snapshot!(g76_taper, "../programs/g76_taper.nc", gsk());
+snapshot!(g76_internal, "../programs/g76_internal.nc", gsk());
+snapshot!(g76_inch, "../programs/g76_inch.nc", inch());
+snapshot!(g76_multistart, "../programs/g76_multistart.nc", gsk());
+snapshot!(g76_mode0, "../programs/g76_mode0.nc", gsk());
+snapshot!(g76_mode1, "../programs/g76_mode1.nc", gsk());
+snapshot!(g76_mode2, "../programs/g76_mode2.nc", gsk());
+snapshot!(g78_mode0, "../programs/g78_mode0.nc", gsk());
+snapshot!(g78_mode1, "../programs/g78_mode1.nc", gsk());
+snapshot!(g78_mode2, "../programs/g78_mode2.nc", gsk());
+snapshot!(g78_mode3, "../programs/g78_mode3.nc", gsk());
+snapshot!(g78_mode4, "../programs/g78_mode4.nc", gsk());
+snapshot!(g78_constant, "../programs/g78_constant.nc", gsk());
+
+/// Thread cuts (the first synchronized move after each pass header): (X, Z) of its end.
+fn cuts(trace: &Trace) -> Vec<(PassKind, i64, i64)> {
+    let mut out = Vec::new();
+    let mut kind = None;
+    for e in &trace.events {
+        match e {
+            Event::Pass(p) => kind = Some(p.kind),
+            Event::Move(m) if m.kind == MoveKind::Thread => {
+                if let Some(k) = kind.take() {
+                    out.push((k, m.x, m.z));
+                }
+            }
+            Event::Move(_) => {}
+        }
+    }
+    out
+}
+
+fn pass_depths(trace: &Trace) -> Vec<(PassKind, i64)> {
+    trace
+        .events
+        .iter()
+        .filter_map(|e| match e {
+            Event::Pass(p) => Some((p.kind, p.diameter_depth)),
+            Event::Move(_) => None,
+        })
+        .collect()
+}
+
+/// G92.EXAMPLE: four cycles at X58.7, X57.7, X57, X56.9 to Z-28 with the J3 K1 pull-out
+/// (G92.PATH, G92.PULLOUT, G92.MODAL), ending where they started.
+#[test]
+fn g92_example_cuts_four_cycles_with_pullout() {
+    let trace = expand_both("g92", include_str!("../../corpus/g92_example.nc"), gsk());
+    assert_eq!(trace.alarm, None);
+    let threads: Vec<(i64, i64)> =
+        trace.moves().filter(|m| m.kind == MoveKind::Thread).map(|m| (m.x, m.z)).collect();
+    let mut expect = Vec::new();
+    for x in [58_700, 57_700, 57_000, 56_900] {
+        expect.push((x, -27_000)); // thread to K = 1 before the end
+        expect.push((x + 6_000, -28_000)); // pull-out J = 3 (radius) at the end Z
+    }
+    assert_eq!(threads, expect);
+    assert!(trace.moves().filter(|m| m.kind == MoveKind::Thread).all(|m| m.feed == 30_000));
+    let last = trace.moves().last().unwrap();
+    assert_eq!((last.x, last.z), (65_000, 5_000));
+}
+
+/// F76.EX1: rough depths 0.7·√n for n = 1…10, then k − d = 2.3, then one finishing pass at
+/// 2.4: twelve passes (G76.DEPTH.1, G76.DEPTH.LAST, G76.FINISH).
+#[test]
+fn f76_ex1_twelve_passes() {
+    for (program, config) in [
+        (include_str!("../../corpus/f76_ex1.nc"), gsk()),
+        (include_str!("../../corpus/f76_ex1_microns.nc"), fanuc()),
+    ] {
+        let trace = expand_both("f76_ex1", program, config);
+        let rough: Vec<i64> = [700, 990, 1212, 1400, 1565, 1715, 1852, 1980, 2100, 2214, 2300]
+            .iter()
+            .map(|r| 2 * r)
+            .collect();
+        let mut expect: Vec<(PassKind, i64)> = rough.into_iter().map(|d| (PassKind::Rough, d)).collect();
+        expect.push((PassKind::Finish, 4800));
+        assert_eq!(pass_depths(&trace), expect);
+        // Infeed X of the finishing pass is the minor diameter X33.8.
+        assert_eq!(cuts(&trace).last().map(|c| c.1), Some(33_800));
+    }
+}
+
+/// G76.REQUIRED: a second block without P(k) or Q(Δd) is an alarm naming the word.
+#[test]
+fn g76_without_k_or_delta_alarms() {
+    for (program, word) in [
+        ("G00 X80 Z10\nG76 P020545 Q0.15 R0.5\nG76 X60 Z-60 Q1.8 F3\n", b'P'),
+        ("G00 X80 Z10\nG76 P020545 Q0.15 R0.5\nG76 X60 Z-60 P3 F3\n", b'Q'),
+    ] {
+        let trace = expand_both("required", program, gsk());
+        let alarm = trace.alarm.expect("alarm");
+        assert_eq!((alarm.code, alarm.word, alarm.rule, alarm.line), (AlarmCode::MissingWord, Some(word), Rule::G76Required, 3));
+    }
+}
+
+/// G78.EXAMPLE as printed has infeed mode 05: out of range (interpretation register).
+#[test]
+fn g78_example_mode_05_is_out_of_range() {
+    let trace = expand_both("g78", include_str!("../../corpus/g78_example.nc"), gsk());
+    let alarm = trace.alarm.expect("alarm");
+    assert_eq!((alarm.code, alarm.word, alarm.rule, alarm.line), (AlarmCode::OutOfRange, Some(b'P'), Rule::G78Mode, 3));
+}

@@ -1,0 +1,89 @@
+//! The production expander allocates nothing (issue: performance; impl is `no_std` without an
+//! allocator, and this checks it at run time too): a counting global allocator counts the
+//! allocations made on this test's thread while whole programs are expanded.
+
+use cycle_vocab::{Config, Grid, Increment, Units};
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+
+struct Counting;
+
+thread_local! {
+    static COUNTING: Cell<bool> = const { Cell::new(false) };
+    static COUNT: Cell<u64> = const { Cell::new(0) };
+}
+
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        if COUNTING.with(|c| c.get()) {
+            COUNT.with(|n| n.set(n.get() + 1));
+        }
+        System.alloc(layout)
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        System.dealloc(ptr, layout)
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        if COUNTING.with(|c| c.get()) {
+            COUNT.with(|n| n.set(n.get() + 1));
+        }
+        System.realloc(ptr, layout, new_size)
+    }
+}
+
+#[global_allocator]
+static ALLOCATOR: Counting = Counting;
+
+/// Expands `program` with the production expander and returns (events, alarm?, allocations).
+fn expand_counting(program: &[u8], config: Config) -> (u64, bool, u64) {
+    let mut events = 0;
+    let mut alarmed = false;
+    COUNT.with(|n| n.set(0));
+    COUNTING.with(|c| c.set(true));
+    for item in cycle_impl::Expander::new(program, config) {
+        match item {
+            Ok(_) => events += 1,
+            Err(_) => alarmed = true,
+        }
+    }
+    COUNTING.with(|c| c.set(false));
+    (events, alarmed, COUNT.with(|n| n.get()))
+}
+
+#[test]
+fn counting_allocator_sees_allocations() {
+    // The counter itself must be able to fail: a Vec on this thread is counted.
+    COUNT.with(|n| n.set(0));
+    COUNTING.with(|c| c.set(true));
+    let v: Vec<u64> = std::hint::black_box(Vec::with_capacity(8));
+    COUNTING.with(|c| c.set(false));
+    drop(v);
+    assert_eq!(COUNT.with(|n| n.get()), 1);
+}
+
+#[test]
+fn expanding_any_cycle_allocates_nothing() {
+    let metric = Config::default();
+    let inch = Config { grid: Grid { units: Units::Inch, increment: Increment::Isc }, ..Config::default() };
+    let programs: &[(&str, Config)] = &[
+        (include_str!("../../corpus/g92_example.nc"), metric),
+        (include_str!("../../corpus/g76_example.nc"), metric),
+        (include_str!("../../corpus/g78_example.nc"), metric), // ends in an alarm
+        (include_str!("../../corpus/f76_ex1.nc"), metric),
+        (include_str!("../../corpus/f76_ex2.nc"), metric),
+        (include_str!("../programs/g76_multistart.nc"), metric),
+        (include_str!("../programs/g76_taper.nc"), metric),
+        (include_str!("../programs/g78_mode4.nc"), metric),
+        (include_str!("../programs/g92_inch.nc"), inch),
+        ("G0 X40 Z5\nG76 P011060 Q0 R0.1\nG76 X27.4 Z-20 P1.09 Q0.01 F2\n", metric), // 9 801 rough passes
+        ("G0 X40 Z5\nG76 X30 Z-20 F2\n", metric),                                 // alarm: missing P
+        ("\u{1}\u{2}garbage(", metric),
+    ];
+    let mut total_events = 0;
+    for (program, config) in programs {
+        let (events, _, allocations) = expand_counting(program.as_bytes(), *config);
+        assert_eq!(allocations, 0, "the production expander allocated on:\n{program}");
+        total_events += events;
+    }
+    assert!(total_events > 10_000, "the programs must exercise the expander ({total_events} events)");
+}
