@@ -92,7 +92,7 @@ impl Number {
         let d = self.decimals as u32;
         if d > places {
             let cut = 10u128.pow(d - places);
-            if m % cut != 0 {
+            if !m.is_multiple_of(cut) {
                 return Err(NumberError::Precision);
             }
             m /= cut;
