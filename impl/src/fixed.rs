@@ -42,26 +42,13 @@ pub fn mul_wide(a: u128, b: u128) -> U256 {
     U256 { hi, lo }
 }
 
-/// ⌊√n⌋, digit by digit (64 steps at most).
+/// ⌊√n⌋: core's integer square root (exact; a 64-bit root when n fits 64 bits, which is the
+/// common case of the depth schedule and several times faster than the 128-bit one).
 pub fn isqrt(n: u128) -> u128 {
-    let mut rem = n;
-    let mut root = 0u128;
-    let mut bit = 1u128 << 126;
-    while bit > n {
-        bit >>= 2;
+    match u64::try_from(n) {
+        Ok(small) => u128::from(small.isqrt()),
+        Err(_) => n.isqrt(),
     }
-    // Invariant: root < 2^65 and bit ≤ 2^126, so root + bit never overflows.
-    while bit != 0 {
-        let trial = root + bit;
-        if rem >= trial {
-            rem -= trial;
-            root = (root >> 1) + bit;
-        } else {
-            root >>= 1;
-        }
-        bit >>= 2;
-    }
-    root
 }
 
 /// √n rounded half up: r + 1 when n − r² > r, r = ⌊√n⌋ (√n is never exactly r + ½).

@@ -101,7 +101,27 @@ fn sqrt_depth(q: &Norm, n: u32) -> Rough {
     if big > U256::from_u128(limit) {
         return clamp(q, n, q.target, Rule::G76Depth1);
     }
-    clamp(q, n, sqrt_round(big.lo), Rule::G76Depth1)
+    clamp(q, n, root(big.lo), Rule::G76Depth1)
+}
+
+/// round(√v), half up (`fixed::sqrt_round`).
+#[cfg(not(feature = "planted-depth-bug"))]
+fn root(v: u128) -> u128 {
+    sqrt_round(v)
+}
+
+/// TEST AID, never for production: the feature `planted-depth-bug` plants a one-increment
+/// error in the G76.DEPTH.1 rounding — r + 1 instead of r when v = r² + r (the comparison
+/// `≥ r` where `> r` is right: √(r² + r) < r + ½) — so that the harness can be shown to find
+/// it (README, "Fuzzing"). With Δd = 1 increment this is pass 2 (√2 → 2 instead of 1).
+#[cfg(feature = "planted-depth-bug")]
+fn root(v: u128) -> u128 {
+    let r = crate::fixed::isqrt(v);
+    if r > 0 && v - r * r >= r {
+        r + 1
+    } else {
+        r
+    }
 }
 
 /// G78.DEPTHMODE 0: n·Δd (exact), clamped to T.
@@ -145,21 +165,53 @@ pub fn next(p: &ScheduleParams, prev: &Rough) -> Option<Rough> {
     Some(sqrt_depth(&q, n))
 }
 
-/// The number of rough passes, or `None` when it exceeds `limit` (PRJ.MAXPASS). At most
-/// `limit + 1` steps of the schedule are taken.
+/// The number of rough passes, or `None` when it exceeds `limit` (PRJ.MAXPASS).
+///
+/// Closed form, so that the pass bound is checked before any motion in O(log limit) work
+/// instead of stepping through every pass (the time to the first move does not grow with the
+/// pass count):
+/// - constant (G78.DEPTHMODE 0): the first n with n·Δd ≥ T, i.e. ⌈T / Δd⌉;
+/// - degressive: with s the switch pass (G76.DEPTH.MIN) and n₁ the first n with
+///   round(√n·Δd) ≥ T, i.e. n·Δd² > T·(T − 1) (G76.DEPTH.LAST): n₁ when n₁ < s, else
+///   (s − 1) + ⌈(T − round(√(s−1)·Δd)) / Δdmin⌉.
 pub fn rough_pass_count(p: &ScheduleParams, limit: u32) -> Option<u32> {
-    let mut r = first(p);
-    let mut count = 1u32;
-    loop {
-        if count > limit {
-            return None;
+    let q = norm(p);
+    let count = if q.constant {
+        q.target.div_ceil(q.dd)
+    } else {
+        // Δd < 2^63 and T < 2^63: Δd² < 2^126 and T·(T − 1) < 2^126.
+        let sqrt_last = q.target * (q.target - 1) / (q.dd * q.dd) + 1;
+        let s = switch_pass(&q, u128::from(limit) + 2);
+        if sqrt_last < s {
+            sqrt_last
+        } else {
+            // s ≤ n₁ < 2^126 / Δd² + 1, so (s − 1)·Δd² ≤ T·(T − 1) fits; the depth of pass
+            // s − 1 is below T, and Δdmin ≥ 1 because a switch exists.
+            let before = sqrt_round((s - 1) * q.dd * q.dd);
+            (s - 1) + (q.target - before).div_ceil(q.dmin.max(1))
         }
-        if r.last {
-            return Some(count);
-        }
-        r = next(p, &r)?;
-        count = count.checked_add(1)?;
+    };
+    u32::try_from(count).ok().filter(|&c| c <= limit)
+}
+
+/// The switch pass s of G76.DEPTH.MIN (the first n ≥ 1 for which [`switched`] holds), or `cap`
+/// when there is none below `cap`. [`switched`] is monotone in n: a binary search.
+fn switch_pass(q: &Norm, cap: u128) -> u128 {
+    let holds = |n: u128| switched(q, u32::try_from(n).unwrap_or(u32::MAX));
+    if !holds(cap) {
+        return cap;
     }
+    // Invariant: !holds(lo) or lo = 0, holds(hi).
+    let (mut lo, mut hi) = (0u128, cap);
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if holds(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    hi
 }
 
 #[cfg(test)]
@@ -345,6 +397,61 @@ mod tests {
                     assert_eq!(rough_pass_count(&p, count - 1), None);
                 }
             }
+        }
+    }
+
+    /// The closed-form pass count equals the count found by stepping through the schedule, on
+    /// small values exhaustively and on large ones at random, with limits around the count.
+    #[test]
+    fn closed_form_count_matches_steps() {
+        fn by_steps(p: &ScheduleParams, limit: u32) -> Option<u32> {
+            let mut r = first(p);
+            let mut count = 1u32;
+            while !r.last {
+                if count > limit {
+                    return None;
+                }
+                r = next(p, &r)?;
+                count += 1;
+            }
+            (count <= limit).then_some(count)
+        }
+        let check = |p: ScheduleParams| {
+            let full = by_steps(&p, 20_001);
+            for limit in [0, 1, 2, 10, 1000, 20_000] {
+                let expected = full.filter(|&c| c <= limit);
+                assert_eq!(rough_pass_count(&p, limit), expected, "{p:?} limit {limit}");
+            }
+            if let Some(c) = full {
+                assert_eq!(rough_pass_count(&p, c), Some(c), "{p:?}");
+                assert_eq!(rough_pass_count(&p, c - 1), None, "{p:?}");
+            }
+        };
+        for dd in 1..=9 {
+            for dmin in 0..=9 {
+                for t in 1..=90 {
+                    for constant in [false, true] {
+                        check(ScheduleParams { first_cut: dd, min_cut: dmin, target: t, constant });
+                    }
+                }
+            }
+        }
+        let mut x = 0x9e37_79b9_7f4a_7c15u64;
+        let mut rnd = |max: u64| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            1 + (x % max) as i64
+        };
+        for _ in 0..2000 {
+            let scale = [10, 1000, 100_000, 999_999_999][rnd(4) as usize - 1];
+            let p = ScheduleParams {
+                first_cut: rnd(scale),
+                min_cut: rnd(scale) - 1,
+                target: rnd(999_999_999),
+                constant: rnd(4) == 1,
+            };
+            check(p);
         }
     }
 

@@ -49,7 +49,7 @@ fn g76(target_passes: u32) -> Case {
 fn g78(passes: i64) -> Case {
     let k = passes + 50;
     let p = format!(
-        "G0 X40 Z5\nG78 P010360 Q0 R0.05 D0\nG78 X27.4 Z-20 P{}.{:03} Q0.001 F2\n",
+        "G0 X60 Z5\nG78 P010360 Q0 R0.05 D0\nG78 X27.4 Z-20 P{}.{:03} Q0.001 F2\n",
         k / 1000,
         k % 1000
     );
