@@ -97,7 +97,7 @@ pub fn body<S: Source, Sch: Schedule>(src: &mut S, sch: &Sch, scope: &Scope) -> 
 }
 
 /// Kani: bounds, cuts and the pass count over the first K + 1 = 5 passes of every legal
-/// schedule. Unwind 65: the harness loop ≤ 5, `rough_pass_count` ≤ 5, `isqrt` ≤ 64 iterations.
+/// schedule. Unwind 65: the harness loop ≤ 5, `rough_pass_count`'s binary search ≤ 34, `isqrt` loop-free.
 #[cfg(kani)]
 #[kani::proof]
 #[kani::unwind(65)]

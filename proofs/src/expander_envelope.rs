@@ -34,7 +34,8 @@
 //! **Kani bounds** ([`KANI`]): lengths ≤ 9 increments, leads ≤ 9 counts, `max_passes` ≤ 3,
 //! L ≤ 2, m ≤ 2; the program is at most [`KANI_PROGRAM`] = 110 bytes (checked by the body in
 //! every driver). Loops: the lexer's byte loops ≤ 111, our event loop ≤ 7·3 + 2 = 23, digit loops
-//! ≤ 20, `isqrt` ≤ 64, the configuration check 15. So `#[kani::unwind(112)]`.
+//! ≤ 20, the pass-count binary search ≤ 34 (`isqrt` is loop-free), the configuration check 15.
+//! So `#[kani::unwind(112)]`.
 
 use crate::program::Program;
 use crate::source::{Outcome, Source};
@@ -327,7 +328,8 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
 }
 
 /// Kani: every program of the [`KANI`] scope. Unwind 112: the program is ≤ 110 bytes (the
-/// lexer's loops run ≤ 111 times); the event loop ≤ 23, `isqrt` ≤ 64, digit loops ≤ 20.
+/// lexer's loops run ≤ 111 times); the event loop ≤ 23, the pass-count search ≤ 34, digit
+/// loops ≤ 20.
 #[cfg(kani)]
 #[kani::proof]
 #[kani::unwind(112)]

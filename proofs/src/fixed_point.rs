@@ -25,7 +25,7 @@
 //! entry against the tangent addition formula from its neighbour, in exact interval arithmetic,
 //! chained from 0° to 45° = 1 and on to 89°; and against `f64::tan`.
 //!
-//! **Kani bounds.** `isqrt` has two loops of ≤ 64 iterations; our 256-bit helpers loop at most 4
+//! **Kani bounds.** `isqrt` is core's loop-free staged root; our 256-bit helpers loop at most 4
 //! times. `#[kani::unwind(65)]`.
 
 use crate::model::{is_div_round, is_sqrt_round, W256};
@@ -178,7 +178,7 @@ pub fn body<S: Source>(src: &mut S) -> Outcome {
 }
 
 /// Kani: every helper over its whole input type (the tangent over every legal length and
-/// angle). Unwind 65: `isqrt`'s loops run ≤ 64 times, the 256-bit helpers ≤ 4.
+/// angle). Unwind 65: `isqrt` is loop-free, the 256-bit helpers loop ≤ 4 times.
 #[cfg(kani)]
 #[kani::proof]
 #[kani::unwind(65)]
