@@ -165,7 +165,7 @@ fn table(cases: &[Case]) {
         });
         let rate = |ns: f64| n / ns * 1e3; // events per ns → M events per s
         println!(
-            "| {} | {} | {:.1} | {:.1} | {:.2} | {:.2} | {:.0} | {:.1} | {:.0} |",
+            "| {} | {} | {:.1} | {:.1} | {:.2} | {:.2} | {:.2} | {:.1} | {:.0} |",
             case.name,
             events.len(),
             rate(imp),
