@@ -79,9 +79,9 @@ fn allowed(kind: Kind, dialect: Dialect) -> &'static [u8] {
         (Kind::Rapid | Kind::Feed, _) => b"FUWXZ",
         (Kind::G92, _) => b"FIJKLRUWXZ",
         (Kind::First(_), Dialect::Fanuc) => b"PQR",
-        (Kind::First(_), Dialect::Gsk) => b"DELPQR",
+        (Kind::First(_), Dialect::Gsk | Dialect::Nc201) => b"DELPQR",
         (Kind::Second(_), Dialect::Fanuc) => b"FIPQRUWXZ",
-        (Kind::Second(_), Dialect::Gsk) => b"FIJKPQRUWXZ",
+        (Kind::Second(_), Dialect::Gsk | Dialect::Nc201) => b"FIJKPQRUWXZ",
     }
 }
 

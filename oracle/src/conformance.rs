@@ -8,7 +8,8 @@
 //! - the same grid (units and increment system);
 //! - the same number of events, and at every index the same event variant (pass header or
 //!   move) with the same fields: for a pass its `index`, `kind` and `diameter_depth`; for a move
-//!   its `kind`, `x`, `z`, `feed`, `angle` and `lead_change`;
+//!   its `kind`, `x`, `z`, `feed`, `angle`, `lead_change`, `lead_change_angle` and
+//!   `lead_floor` (the variable lead: lead at the start, its change over an angle, its floor);
 //! - the same ending: both without an alarm, or both with an alarm of the same `code`, `word`,
 //!   `line` and `rule`.
 //!
@@ -263,6 +264,8 @@ fn move_field(r: &Move, c: &Move) -> Option<(&'static str, String, String)> {
         .or_else(|| differ("feed", r.feed, c.feed))
         .or_else(|| differ("angle", r.angle, c.angle))
         .or_else(|| differ("lead_change", r.lead_change, c.lead_change))
+        .or_else(|| differ("lead_change_angle", r.lead_change_angle, c.lead_change_angle))
+        .or_else(|| differ("lead_floor", r.lead_floor, c.lead_floor))
 }
 
 /// The first differing field of two alarms: code, word, line, rule.
@@ -326,8 +329,8 @@ impl fmt::Display for Divergence {
         if let (Some(field), Some((r, c))) = (self.field, &self.values) {
             let unit = match field {
                 "x" | "z" | "diameter_depth" => " (grid increments)",
-                "feed" | "lead_change" => " (lead counts)",
-                "angle" => " (0.001°)",
+                "feed" | "lead_change" | "lead_floor" => " (lead counts)",
+                "angle" | "lead_change_angle" => " (0.001°)",
                 _ => "",
             };
             writeln!(f, "  {field} differs: reference {r}, candidate {c}{unit}")?;
@@ -477,14 +480,16 @@ mod tests {
 
     #[test]
     fn field_mismatch_in_every_compared_field() {
-        let base = Move { angle: 120_000, lead_change: 5, ..Move::thread(1_000, -2_000, 30_000, 0, Rule::G76Path) };
-        let cases: [(&str, Move); 6] = [
+        let base = Move::variable_thread(1_000, -2_000, 30_000, 120_000, -5, 90_000, 5, Rule::G76Path);
+        let cases: [(&str, Move); 8] = [
             ("kind", Move { kind: MoveKind::Feed, ..base }),
             ("x", Move { x: 1_002, ..base }),
             ("z", Move { z: -2_001, ..base }),
             ("feed", Move { feed: 30_001, ..base }),
             ("angle", Move { angle: 240_000, ..base }),
-            ("lead_change", Move { lead_change: 0, ..base }),
+            ("lead_change", Move { lead_change: -6, ..base }),
+            ("lead_change_angle", Move { lead_change_angle: 360_000, ..base }),
+            ("lead_floor", Move { lead_floor: 0, ..base }),
         ];
         for (field, m) in cases {
             let d = check(&with(vec![Event::Move(base)], None), &with(vec![Event::Move(m)], None)).unwrap_err();
@@ -501,6 +506,19 @@ mod tests {
             let d = check(&with(vec![Event::Pass(p)], None), &with(vec![Event::Pass(c)], None)).unwrap_err();
             assert_eq!((d.kind, d.field, d.rule), (DivergenceKind::FieldMismatch, Some(field), Some(Rule::G76Finish)));
         }
+    }
+
+    /// A variable lead that differs only in how it changes is a divergence naming that field,
+    /// with its unit.
+    #[test]
+    fn lead_change_divergence_is_reported() {
+        let r = Move::variable_thread(24_000, -18_000, 15_000, 0, 500, 180_000, 0, Rule::G162F);
+        let c = Move { lead_change_angle: 360_000, ..r };
+        let d = check(&with(vec![Event::Move(r)], None), &with(vec![Event::Move(c)], None)).unwrap_err();
+        assert_eq!((d.kind, d.field, d.rule), (DivergenceKind::FieldMismatch, Some("lead_change_angle"), Some(Rule::G162F)));
+        let text = d.to_string();
+        assert!(text.contains("lead_change_angle differs: reference 180000, candidate 360000 (0.001°)"), "{text}");
+        assert!(text.contains("K0.0500 J180000"), "{text}");
     }
 
     #[test]

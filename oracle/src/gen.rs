@@ -85,6 +85,28 @@ pub fn any_case() -> impl Strategy<Value = Case> {
     prop_oneof![4 => g92(), 4 => multipass(), 1 => garbage()]
 }
 
+/// A knob-built family, for drivers other than proptest (the fuzz targets draw the knobs from
+/// the fuzzer's bytes, `crate::fuzzing`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Family {
+    G92,
+    /// G76, G78 or FANUC G76 (the first knob decides).
+    Multipass,
+    Soup,
+    Mutant,
+}
+
+/// The case the knobs describe; knobs past the end of `knobs` are 0 (the ordinary choice).
+pub fn build(family: Family, knobs: &[u32]) -> Case {
+    let mut d = Dice::new(knobs);
+    match family {
+        Family::G92 => build_g92(&mut d),
+        Family::Multipass => build_multipass(&mut d),
+        Family::Soup => build_soup(&mut d),
+        Family::Mutant => build_mutant(&mut d),
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Decisions
 

@@ -18,7 +18,11 @@ pub mod catalogue;
 pub mod conformance;
 pub mod corpus;
 pub mod engine;
+pub mod fuzzing;
+pub mod gate;
 pub mod gen;
+pub mod nightly;
+pub mod readback;
 
 pub use conformance::{check, Divergence, DivergenceKind};
 pub use engine::{Engine, ImplEngine, SpecEngine};

@@ -37,7 +37,7 @@ impl Out {
         if x == self.x && z == self.z {
             return Ok(());
         }
-        self.events.push(Event::Move(Move { kind, x, z, feed, angle, lead_change: 0, rule }));
+        self.events.push(Event::Move(Move { kind, x, z, feed, angle, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule }));
         self.x = x;
         self.z = z;
         Ok(())

@@ -12,6 +12,9 @@ pub enum Dialect {
     Gsk,
     /// FANUC: G76 P(k), Q(Δd), Q(Δdmin) without a decimal point are least increments (F76.MICRONS).
     Fanuc,
+    /// The Russian controller of M004: G90/G91 (NC201.ABSINC), X and W radius or diameter by
+    /// the parameter `x_radius` (NC201.XMODE), G162.
+    Nc201,
 }
 
 /// Machine parameters. Lengths are counts of the least increment.
@@ -42,6 +45,9 @@ pub struct Params {
     pub p5145_depth_mode: u32,
     /// PRJ.MAXPASS: the most thread cuts (passes × starts) one cycle may make, 1…1 000 000.
     pub max_passes: u32,
+    /// NC201.XMODE: under `nc201`, X and W words are 0 = diameters, 1 = radii (0…1).
+    #[cfg_attr(feature = "std", serde(default))]
+    pub x_radius: u32,
 }
 
 impl Default for Params {
@@ -59,6 +65,7 @@ impl Default for Params {
             p5144_infeed_mode: 0,
             p5145_depth_mode: 1,
             max_passes: 10_000,
+            x_radius: 0,
         }
     }
 }
@@ -68,7 +75,7 @@ pub const MAX_LENGTH: i64 = 999_999_999;
 
 impl Params {
     /// Sets the parameter named `name` (`"19"`, `"107"`, `"18"`, `"5130"`…`"5145"`,
-    /// `"max_passes"`), checking its range. The error says what is legal.
+    /// `"max_passes"`, `"x_radius"`), checking its range. The error says what is legal.
     pub fn set(&mut self, name: &str, value: i64) -> Result<(), &'static str> {
         fn within(v: i64, lo: i64, hi: i64, err: &'static str) -> Result<i64, &'static str> {
             if (lo..=hi).contains(&v) { Ok(v) } else { Err(err) }
@@ -87,7 +94,8 @@ impl Params {
             "5144" => self.p5144_infeed_mode = small(value, 0, 4, "5144 takes 0…4")?,
             "5145" => self.p5145_depth_mode = small(value, 0, 1, "5145 takes 0 or 1")?,
             "max_passes" => self.max_passes = small(value, 1, 1_000_000, "max_passes takes 1…1000000")?,
-            _ => return Err("unknown parameter (19, 107, 18, 5130, 5131, 5140…5145, max_passes)"),
+            "x_radius" => self.x_radius = small(value, 0, 1, "x_radius takes 0 (X diameter) or 1 (X radius)")?,
+            _ => return Err("unknown parameter (19, 107, 18, 5130, 5131, 5140…5145, max_passes, x_radius)"),
         }
         Ok(())
     }
@@ -130,5 +138,8 @@ mod tests {
         assert!(p.set("5131", 0).is_err());
         assert!(p.set("max_passes", 0).is_err());
         assert!(p.set("9999", 1).is_err());
+        assert!(p.set("x_radius", 2).is_err());
+        assert!(p.set("x_radius", 1).is_ok());
+        assert_eq!(p.x_radius, 1);
     }
 }

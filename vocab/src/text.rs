@@ -12,8 +12,10 @@
 //! ```
 //!
 //! One motion per line with both axes, X as a diameter, lengths with the grid's decimals, F with
-//! the lead grid's decimals. `G32` lines add `Q` (start angle, 0.001°) and `K` (lead change per
-//! revolution) only when non-zero. A pass header prints the radius depth.
+//! the lead grid's decimals. `G32` lines add `Q` (start angle, 0.001°) only when non-zero; a
+//! variable lead adds `K` (lead change, lead grid), `J` (the angle of that change, 0.001°, only
+//! when it is not 360 000, one revolution) and `R` (the lead floor, lead grid, only when
+//! non-zero). A pass header prints the radius depth.
 
 use crate::alarm::Alarm;
 use crate::trace::{Event, Move, MoveKind};
@@ -86,6 +88,12 @@ impl Trace {
                         }
                         if m.lead_change != 0 {
                             let _ = write!(line, " K{}", fixed(m.lead_change, grid.lead_decimals()));
+                            if m.lead_change_angle != 360_000 {
+                                let _ = write!(line, " J{}", m.lead_change_angle);
+                            }
+                        }
+                        if m.lead_floor != 0 {
+                            let _ = write!(line, " R{}", fixed(m.lead_floor, grid.lead_decimals()));
                         }
                         line
                     }
@@ -146,7 +154,8 @@ mod tests {
                 Event::Move(Move::rapid(65_000, 5_000, Rule::PrjModal)),
                 Event::Pass(Pass { index: 1, kind: PassKind::Rough, diameter_depth: 6_300, rule: Rule::G92Path }),
                 Event::Move(Move::thread(58_700, -27_000, 30_000, 0, Rule::G92Path)),
-                Event::Move(Move { angle: 180_000, lead_change: -5, ..Move::thread(1, -2, 3, 0, Rule::G34) }),
+                Event::Move(Move::variable_thread(1, -2, 3, 180_000, -5, 360_000, 0, Rule::G34)),
+                Event::Move(Move::variable_thread(1, -4, 30_000, 0, -2_500, 90_000, 2_500, Rule::G162F)),
                 Event::Pass(Pass { index: 2, kind: PassKind::Finish, diameter_depth: 1, rule: Rule::G92Path }),
                 Event::Move(Move::feed(-1_500, 0, 2_000, Rule::PrjModal)),
             ],
@@ -162,6 +171,7 @@ mod tests {
             (PASS 1 ROUGH DEPTH 3.150)\n\
             G32 X58.700 Z-27.000 F3.0000\n\
             G32 X0.001 Z-0.002 F0.0003 Q180000 K-0.0005\n\
+            G32 X0.001 Z-0.004 F3.0000 K-0.2500 J90000 R0.2500\n\
             (PASS 2 FINISH DEPTH 0.0005)\n\
             G01 X-1.500 Z0.000 F0.2000\n\
             (ALARM 2001 LINE 3 WORD P RULE G76.REQUIRED)\n";

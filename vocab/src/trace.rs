@@ -1,9 +1,17 @@
 //! The trace (PRJ.TRACE): what an expander emits, one event at a time.
 //!
 //! Coordinates are absolute end points in increments: X as a diameter, Z. Thread moves carry the
-//! lead (lead grid, COM.LEAD), the spindle start angle in 0.001° (COM.MULTISTART) and the lead
-//! change per revolution (0 for a constant lead). Pass headers carry the pass index, its kind and
-//! its depth on diameter (twice the radius depth), so depths derived from diameters stay exact.
+//! lead (lead grid, COM.LEAD), the spindle start angle in 0.001° (COM.MULTISTART) and, for a
+//! variable lead (G34, G162.I), the lead change over a spindle angle and the floor where a
+//! shrinking lead stops. Pass headers carry the pass index, its kind and its depth on diameter
+//! (twice the radius depth), so depths derived from diameters stay exact.
+//!
+//! **Variable lead** (docs/INTERPRETATION.md, "Trace"): a thread move with `lead_change ≠ 0` is
+//! synchronized at its own start; there the lead is `feed`, and it changes continuously by
+//! `lead_change` per `lead_change_angle` of spindle rotation. After a long-axis travel `s` (lead
+//! counts) the lead `L` satisfies `L² = feed² + 720 000·lead_change·s / lead_change_angle`. A
+//! shrinking lead stops changing once it is ≤ `lead_floor` (0: no floor). A constant lead has
+//! `lead_change = lead_change_angle = lead_floor = 0`.
 
 use crate::rule::Rule;
 
@@ -33,23 +41,50 @@ pub struct Move {
     pub feed: i64,
     /// Spindle start angle of a thread move, 0.001°; 0 otherwise.
     pub angle: u32,
-    /// Lead change per revolution of a thread move, lead counts; 0 for a constant lead.
+    /// Lead change of a thread move per `lead_change_angle`, lead counts, signed; 0 for a
+    /// constant lead.
     pub lead_change: i64,
+    /// The spindle angle over which the lead changes by `lead_change`, 0.001° (360 000: per
+    /// revolution); 0 when `lead_change` is 0.
+    #[cfg_attr(feature = "std", serde(default))]
+    pub lead_change_angle: u32,
+    /// The lead at or below which a shrinking lead stops changing (G162.I), lead counts; 0: none.
+    #[cfg_attr(feature = "std", serde(default))]
+    pub lead_floor: i64,
     /// The rule this move realises.
     pub rule: Rule,
 }
 
 impl Move {
     pub const fn rapid(x: i64, z: i64, rule: Rule) -> Move {
-        Move { kind: MoveKind::Rapid, x, z, feed: 0, angle: 0, lead_change: 0, rule }
+        Move { kind: MoveKind::Rapid, x, z, feed: 0, angle: 0, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule }
     }
 
     pub const fn feed(x: i64, z: i64, feed: i64, rule: Rule) -> Move {
-        Move { kind: MoveKind::Feed, x, z, feed, angle: 0, lead_change: 0, rule }
+        Move { kind: MoveKind::Feed, x, z, feed, angle: 0, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule }
     }
 
     pub const fn thread(x: i64, z: i64, lead: i64, angle: u32, rule: Rule) -> Move {
-        Move { kind: MoveKind::Thread, x, z, feed: lead, angle, lead_change: 0, rule }
+        Move { kind: MoveKind::Thread, x, z, feed: lead, angle, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule }
+    }
+
+    /// A thread move whose lead starts at `lead` and changes by `change` per `change_angle`
+    /// (0.001°), held once a shrinking lead is ≤ `floor` (0: no floor). A `change` of 0 gives the
+    /// constant-lead form (all three fields 0).
+    pub const fn variable_thread(
+        x: i64,
+        z: i64,
+        lead: i64,
+        angle: u32,
+        change: i64,
+        change_angle: u32,
+        floor: i64,
+        rule: Rule,
+    ) -> Move {
+        if change == 0 {
+            return Move::thread(x, z, lead, angle, rule);
+        }
+        Move { kind: MoveKind::Thread, x, z, feed: lead, angle, lead_change: change, lead_change_angle: change_angle, lead_floor: floor, rule }
     }
 }
 

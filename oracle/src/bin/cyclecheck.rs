@@ -18,6 +18,9 @@ usage:
   cyclecheck expand FILE [--engine spec|impl] [--format gcode|json] [OPTIONS]
   cyclecheck diff FILE [--format gcode|json] [OPTIONS]      spec vs impl
   cyclecheck corpus [--format text|json]                    every built-in example, spec vs impl
+  cyclecheck gate [--cases N] [--seed S] [--no-cargo-test]  pre-merge gate
+  cyclecheck fuzz [--budget SECS] [--targets T,..] [--out DIR] [--features F] [--write-seeds]
+                                                            nightly fuzz campaign
 options:
   --dialect gsk|fanuc       input conventions (default gsk)
   --units metric|inch       (default metric)
@@ -94,6 +97,8 @@ fn run(args: &[String]) -> Result<u8, Bad> {
         "expand" => expand(parse(rest, true)?),
         "diff" => diff(parse(rest, false)?),
         "corpus" => corpus_command(rest),
+        "gate" => cycle_oracle::gate::command(rest).map_err(Bad),
+        "fuzz" => cycle_oracle::nightly::command(rest).map_err(Bad),
         other => bad(format!("unknown command {other:?}\n{USAGE}")),
     }
 }

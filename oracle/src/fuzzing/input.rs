@@ -1,0 +1,121 @@
+//! The structured input of `diff_spec_impl` and `gcode_roundtrip`: a cycle command built with
+//! `arbitrary` from the fuzzer's bytes.
+//!
+//! Mostly a generator family and the knobs of `crate::gen` (the proptest generators'
+//! deterministic builders), so the fuzzer and the proptest campaigns share one description of
+//! the input space: most programs legal, many on the edges the rules turn on (Δd against Δdmin
+//! and k − d with exact ties, tapers, internal threads, inch and ISC grids, multi-start, every
+//! infeed and depth mode, FANUC G76, words just outside their ranges). Each four bytes are one
+//! knob; past the end of the input every knob is 0, the ordinary choice, so short inputs are
+//! plain programs and a mutated byte changes one decision.
+//!
+//! Sometimes a literal program under a chosen configuration instead: the manuals' examples
+//! enter the seed corpus this way, and libFuzzer's byte mutations of them reach programs no
+//! builder writes.
+
+use crate::gen::{self, Case, Family, KNOBS};
+use arbitrary::{Arbitrary, Unstructured};
+use cycle_vocab::{Config, Dialect, Grid, Increment, Units};
+
+/// A cycle command: built from knobs, or literal.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum CycleInput {
+    Built { family: Family, knobs: Vec<u32> },
+    /// A program under the configuration of [`literal_config`] `config`.
+    Literal { config: u8, program: Vec<u8> },
+}
+
+/// The first byte (mod 16): 0–6 G76/G78/FANUC G76, 7–10 G92, 11 word soup, 12 corpus mutant,
+/// 13–15 literal.
+const FAMILY_BYTES: u8 = 16;
+const LITERAL: u8 = 13;
+
+/// The configuration of a literal program: bit 0 FANUC, bit 1 inch, bit 2 ISC.
+pub fn literal_config(bits: u8) -> Config {
+    let units = if bits & 2 != 0 { Units::Inch } else { Units::Metric };
+    let increment = if bits & 4 != 0 { Increment::Isc } else { Increment::Isb };
+    let dialect = if bits & 1 != 0 { Dialect::Fanuc } else { Dialect::Gsk };
+    Config { dialect, grid: Grid { units, increment }, ..Config::default() }
+}
+
+/// The bits of [`literal_config`] for a configuration on the ISB grid with default parameters.
+pub fn literal_bits(config: &Config) -> u8 {
+    u8::from(config.dialect == Dialect::Fanuc)
+        | if config.grid.units == Units::Inch { 2 } else { 0 }
+        | if config.grid.increment == Increment::Isc { 4 } else { 0 }
+}
+
+impl<'a> Arbitrary<'a> for CycleInput {
+    fn arbitrary(u: &mut Unstructured<'a>) -> arbitrary::Result<CycleInput> {
+        let family = match u.int_in_range(0..=FAMILY_BYTES - 1)? {
+            0..=6 => Family::Multipass,
+            7..=10 => Family::G92,
+            11 => Family::Soup,
+            12 => Family::Mutant,
+            _ => {
+                let config = u.arbitrary::<u8>()? & 7;
+                let program = u.bytes(u.len())?.to_vec();
+                return Ok(CycleInput::Literal { config, program });
+            }
+        };
+        let knobs = (0..KNOBS).map(|_| u.arbitrary::<u32>()).collect::<arbitrary::Result<Vec<u32>>>()?;
+        Ok(CycleInput::Built { family, knobs })
+    }
+}
+
+impl CycleInput {
+    /// Reads the input from fuzz bytes (any bytes make an input).
+    pub fn from_bytes(data: &[u8]) -> CycleInput {
+        CycleInput::arbitrary_take_rest(Unstructured::new(data))
+            .unwrap_or(CycleInput::Built { family: Family::Multipass, knobs: vec![0; KNOBS] })
+    }
+
+    /// The fuzz bytes of a literal program under `config` (dialect and grid; the seed corpus).
+    pub fn literal_bytes(program: &[u8], config: &Config) -> Vec<u8> {
+        let mut out = vec![LITERAL, literal_bits(config)];
+        out.extend_from_slice(program);
+        out
+    }
+
+    /// The program and configuration the input describes.
+    pub fn case(&self) -> Case {
+        match self {
+            CycleInput::Built { family, knobs } => gen::build(*family, knobs),
+            CycleInput::Literal { config, program } => {
+                Case { family: "literal", program: program.clone(), config: literal_config(*config) }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn empty_input_is_the_plain_multipass_program() {
+        let i = CycleInput::from_bytes(&[]);
+        assert_eq!(i, CycleInput::Built { family: Family::Multipass, knobs: vec![0; KNOBS] });
+        let c = i.case();
+        assert_eq!(c.family, "g76");
+        assert!(c.text().contains("G76"), "{}", c.text());
+    }
+
+    #[test]
+    fn bytes_pick_family_and_knobs() {
+        let CycleInput::Built { family, knobs } = CycleInput::from_bytes(&[7, 9, 0, 0, 0]) else { panic!() };
+        assert_eq!(family, Family::G92);
+        assert_ne!(knobs[0], 0);
+        assert!(knobs[1..].iter().all(|&k| k == 0));
+    }
+
+    #[test]
+    fn literal_programs_keep_their_configuration() {
+        let inch_fanuc = literal_config(3);
+        assert_eq!((inch_fanuc.dialect, inch_fanuc.grid.units), (Dialect::Fanuc, Units::Inch));
+        let bytes = CycleInput::literal_bytes(b"G0 X1 Z1\n", &inch_fanuc);
+        let c = CycleInput::from_bytes(&bytes).case();
+        assert_eq!((c.family, c.program.as_slice(), c.config), ("literal", &b"G0 X1 Z1\n"[..], inch_fanuc));
+        assert_eq!(literal_bits(&literal_config(6)), 6);
+    }
+}

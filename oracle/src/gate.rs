@@ -1,0 +1,307 @@
+//! `cyclecheck gate`: the pre-merge gate — fast, strict, non-zero on any failure.
+//!
+//! Steps, in order, each timed (the gate goes on after a failure, so one run lists them all):
+//!
+//! 1. `corpus`: every built-in program (the manuals' examples, one program per feature)
+//!    through spec and impl; all must conform;
+//! 2. `campaign`: a fixed-seed differential campaign over every generator family
+//!    (`crate::gen::any_case`), `cases` cases, spec vs impl by the conformance relation;
+//! 3. `fuzz replay`: the committed seed corpus and regression cases of every fuzz target
+//!    (`fuzz/corpus/`, `tests/fuzz_regressions/`) through the targets' bodies;
+//! 4. `cargo test`: the workspace's tests with `CI=true INSTA_UPDATE=no` (snapshots checked,
+//!    never written), a fixed `CYCLECHECK_SEED`, `CYCLECHECK_CASES` and
+//!    `CYCLECHECK_PROOF_CASES` — snapshots, properties, differential campaigns, the bounded
+//!    proofs' exhaustive and random drivers, the fuzz replay. Skipped with `--no-cargo-test`.
+//!
+//! Steps 1–3 run in this process, so a `cyclecheck` built with a feature of the impl (the
+//! planted bug, `planted-depth-bug`) gates that impl; step 4 passes the same feature on.
+
+use crate::campaign::{self, Verdict};
+use crate::engine::{ImplEngine, SpecEngine};
+use crate::fuzzing::Target;
+use crate::{corpus, gen};
+use proptest::strategy::{Strategy, ValueTree};
+use proptest::test_runner::{Config as PtConfig, RngAlgorithm, TestRng, TestRunner};
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+/// What the gate runs.
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// Cases of the in-process differential campaign.
+    pub cases: u32,
+    /// The campaign's seed, also passed to `cargo test` as `CYCLECHECK_SEED`.
+    pub seed: u64,
+    /// Whether to run step 4.
+    pub cargo_test: bool,
+    /// `CYCLECHECK_CASES` for `cargo test` (properties and differential campaigns).
+    pub test_cases: u32,
+    /// `CYCLECHECK_PROOF_CASES` for `cargo test` (the proofs' random drivers).
+    pub proof_cases: u64,
+    /// The repository root.
+    pub root: PathBuf,
+}
+
+impl Default for Options {
+    fn default() -> Options {
+        Options {
+            cases: 3_000,
+            seed: 0x5eed_6a7e,
+            cargo_test: true,
+            test_cases: 2_000,
+            proof_cases: 200_000,
+            root: PathBuf::from("."),
+        }
+    }
+}
+
+/// One step's result.
+#[derive(Clone, Debug)]
+pub struct Step {
+    pub name: &'static str,
+    pub passed: bool,
+    /// One line: what ran, counts.
+    pub summary: String,
+    /// The failure reports (empty when passed).
+    pub details: String,
+    pub time: Duration,
+}
+
+fn step(name: &'static str, f: impl FnOnce() -> (bool, String, String)) -> Step {
+    let t = Instant::now();
+    let (passed, summary, details) = f();
+    Step { name, passed, summary, details, time: t.elapsed() }
+}
+
+/// The first few findings of a report, whole.
+fn findings_text(report: &campaign::Report) -> String {
+    let shown: Vec<String> = report.findings.iter().take(3).map(|f| f.to_string()).collect();
+    let more = report.findings.len().saturating_sub(3);
+    let mut s = shown.join("\n\n");
+    if more > 0 {
+        s += &format!("\n\n… and {more} more");
+    }
+    s
+}
+
+/// Step 1.
+pub fn corpus_step() -> Step {
+    step("corpus", || {
+        let r = campaign::run((&SpecEngine, &ImplEngine::default()), corpus::cases());
+        (r.all_conform(), format!("{} programs, {} conform", r.cases(), r.conforming()), findings_text(&r))
+    })
+}
+
+/// Step 2: `cases` cases of `gen::any_case()` from a fixed seed.
+pub fn campaign_step(cases: u32, seed: u64) -> Step {
+    step("campaign", || {
+        let mut bytes = [0u8; 32];
+        for (i, chunk) in bytes.chunks_mut(8).enumerate() {
+            chunk.copy_from_slice(&(seed.rotate_left(16 * i as u32) ^ i as u64).to_le_bytes());
+        }
+        let mut runner = TestRunner::new_with_rng(PtConfig::default(), TestRng::from_seed(RngAlgorithm::ChaCha, &bytes));
+        let strategy = gen::any_case();
+        let cases = (0..cases).filter_map(|i| {
+            let case = strategy.new_tree(&mut runner).ok()?.current();
+            Some((format!("{}#{i}", case.family), case.program, case.config))
+        });
+        let r = campaign::run((&SpecEngine, &ImplEngine::default()), cases);
+        let panics = r.findings.iter().filter(|f| matches!(f.verdict, Verdict::Panic { .. })).count();
+        let summary = format!("seed {seed:#x}: {} cases, {} conform, {} panics", r.cases(), r.conforming(), panics);
+        (r.all_conform() && r.cases() > 0, summary, findings_text(&r))
+    })
+}
+
+/// The committed inputs of `target`: seed corpus and regression cases (path, bytes).
+pub fn committed_inputs(root: &Path, target: Target) -> Vec<(PathBuf, Vec<u8>)> {
+    let mut out = Vec::new();
+    for dir in [root.join("fuzz/corpus").join(target.name()), root.join("tests/fuzz_regressions").join(target.name())] {
+        let Ok(entries) = std::fs::read_dir(&dir) else { continue };
+        let mut paths: Vec<PathBuf> = entries.filter_map(|e| Some(e.ok()?.path())).filter(|p| p.is_file()).collect();
+        paths.sort();
+        for p in paths {
+            if p.file_name().is_some_and(|n| n.to_string_lossy().starts_with('.') || n == "README.md") {
+                continue;
+            }
+            if let Ok(bytes) = std::fs::read(&p) {
+                out.push((p, bytes));
+            }
+        }
+    }
+    out
+}
+
+/// Step 3.
+pub fn replay_step(root: &Path) -> Step {
+    step("fuzz replay", || {
+        let (mut n, mut failures) = (0, Vec::new());
+        for t in Target::ALL {
+            for (path, bytes) in committed_inputs(root, t) {
+                n += 1;
+                let outcome = std::panic::catch_unwind(|| t.run(&bytes));
+                match outcome {
+                    Ok(Ok(())) => {}
+                    Ok(Err(report)) => failures.push(format!("{} {}:\n{report}", t.name(), path.display())),
+                    Err(_) => failures.push(format!("{} {}: the body panicked", t.name(), path.display())),
+                }
+            }
+        }
+        let summary = format!("{n} committed inputs, {} fail", failures.len());
+        (n > 0 && failures.is_empty(), summary, failures.into_iter().take(3).collect::<Vec<_>>().join("\n\n"))
+    })
+}
+
+/// Step 4.
+pub fn cargo_test_step(o: &Options) -> Step {
+    step("cargo test", || {
+        let mut cmd = std::process::Command::new("cargo");
+        cmd.current_dir(&o.root).args(["test", "--workspace"]);
+        if cfg!(feature = "planted-depth-bug") {
+            cmd.args(["--features", "cycle-impl/planted-depth-bug"]);
+        }
+        cmd.env("CI", "true")
+            .env("INSTA_UPDATE", "no")
+            .env("CYCLECHECK_SEED", o.seed.to_string())
+            .env("CYCLECHECK_CASES", o.test_cases.to_string())
+            .env("CYCLECHECK_PROOF_CASES", o.proof_cases.to_string());
+        let line = format!(
+            "CI=true INSTA_UPDATE=no CYCLECHECK_SEED={} CYCLECHECK_CASES={} CYCLECHECK_PROOF_CASES={} {}",
+            o.seed,
+            o.test_cases,
+            o.proof_cases,
+            if cfg!(feature = "planted-depth-bug") {
+                "cargo test --workspace --features cycle-impl/planted-depth-bug"
+            } else {
+                "cargo test --workspace"
+            }
+        );
+        match cmd.output() {
+            Err(e) => (false, line, format!("cannot run cargo: {e}")),
+            Ok(out) => {
+                let text = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+                let (passed, failed) = test_counts(&text);
+                let summary = format!("{line}: {passed} passed, {failed} failed");
+                let details = if out.status.success() { String::new() } else { failure_lines(&text) };
+                (out.status.success(), summary, details)
+            }
+        }
+    })
+}
+
+/// Sums the `test result:` lines of cargo test's output: (passed, failed).
+pub fn test_counts(output: &str) -> (u64, u64) {
+    let count = |line: &str, word: &str| -> u64 {
+        let mut prev = None;
+        for w in line.split([' ', ';']) {
+            if w == word {
+                return prev.and_then(|p: &str| p.parse().ok()).unwrap_or(0);
+            }
+            if !w.is_empty() {
+                prev = Some(w);
+            }
+        }
+        0
+    };
+    output
+        .lines()
+        .filter(|l| l.starts_with("test result:"))
+        .fold((0, 0), |(p, f), l| (p + count(l, "passed"), f + count(l, "failed")))
+}
+
+/// The lines of cargo test's output that say what failed (at most 60).
+fn failure_lines(output: &str) -> String {
+    let keep = |l: &str| {
+        l.contains("FAILED") || l.contains("panicked") || l.starts_with("error") || l.contains("failures:") || l.starts_with("    ")
+    };
+    output.lines().filter(|l| keep(l)).take(60).collect::<Vec<_>>().join("\n")
+}
+
+/// Runs the gate; the steps and the total wall time.
+pub fn run(o: &Options) -> (Vec<Step>, Duration) {
+    let t = Instant::now();
+    let mut steps = vec![corpus_step(), campaign_step(o.cases, o.seed), replay_step(&o.root)];
+    if o.cargo_test {
+        steps.push(cargo_test_step(o));
+    }
+    (steps, t.elapsed())
+}
+
+/// The report: one line per step, failure details, the verdict and the wall time.
+pub fn report(steps: &[Step], total: Duration) -> String {
+    use std::fmt::Write as _;
+    let mut s = String::new();
+    for st in steps {
+        let _ = writeln!(s, "{:4} {:12} {:>7.1} s  {}", if st.passed { "ok" } else { "FAIL" }, st.name, st.time.as_secs_f64(), st.summary);
+    }
+    for st in steps.iter().filter(|st| !st.passed && !st.details.is_empty()) {
+        let _ = writeln!(s, "\n--- {} ---\n{}", st.name, st.details);
+    }
+    let ok = steps.iter().all(|st| st.passed);
+    let _ = writeln!(
+        s,
+        "\ngate {}: {} of {} steps passed, wall time {:.1} s on {} cores",
+        if ok { "PASSED" } else { "FAILED" },
+        steps.iter().filter(|st| st.passed).count(),
+        steps.len(),
+        total.as_secs_f64(),
+        std::thread::available_parallelism().map_or(0, |n| n.get())
+    );
+    s
+}
+
+/// `cyclecheck gate [--cases N] [--seed S] [--no-cargo-test] [--test-cases N] [--proof-cases N]`,
+/// run from the repository root: prints the report, returns the exit code (0 passed, 1 failed).
+pub fn command(args: &[String]) -> Result<u8, String> {
+    let mut o = Options::default();
+    let mut it = args.iter();
+    while let Some(arg) = it.next() {
+        let mut value = |name: &str| -> Result<u64, String> {
+            let v = it.next().ok_or_else(|| format!("{name} needs a value"))?;
+            v.parse().map_err(|_| format!("{name} takes a non-negative integer, not {v:?}"))
+        };
+        match arg.as_str() {
+            "--cases" => o.cases = u32::try_from(value("--cases")?).map_err(|_| "--cases: too large".to_string())?,
+            "--seed" => o.seed = value("--seed")?,
+            "--test-cases" => o.test_cases = u32::try_from(value("--test-cases")?).map_err(|_| "--test-cases: too large".to_string())?,
+            "--proof-cases" => o.proof_cases = value("--proof-cases")?,
+            "--no-cargo-test" => o.cargo_test = false,
+            other => return Err(format!("gate: unknown argument {other:?}")),
+        }
+    }
+    if !o.root.join("fuzz/corpus").is_dir() {
+        return Err("gate: run it from the repository root (no fuzz/corpus here)".to_string());
+    }
+    let (steps, total) = run(&o);
+    print!("{}", report(&steps, total));
+    Ok(if steps.iter().all(|s| s.passed) { 0 } else { 1 })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn counts_cargo_test_results() {
+        let out = "test result: ok. 12 passed; 0 failed; 1 ignored; 0 measured\nnoise\n\
+                   test result: FAILED. 3 passed; 2 failed; 0 ignored\n";
+        assert_eq!(test_counts(out), (15, 2));
+    }
+
+    #[test]
+    fn in_process_steps_pass_on_this_impl() {
+        let root = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
+        let steps = [corpus_step(), campaign_step(200, 1), replay_step(root)];
+        for s in &steps {
+            assert!(s.passed, "{}: {}\n{}", s.name, s.summary, s.details);
+        }
+        let text = report(&steps, Duration::from_secs(1));
+        assert!(text.contains("gate PASSED: 3 of 3 steps passed"), "{text}");
+    }
+
+    #[test]
+    fn a_failed_step_fails_the_gate_and_shows_its_details() {
+        let bad = Step { name: "x", passed: false, summary: "1 case".into(), details: "DIVERGE here".into(), time: Duration::ZERO };
+        let text = report(&[corpus_step(), bad], Duration::ZERO);
+        assert!(text.contains("FAIL x") && text.contains("--- x ---\nDIVERGE here") && text.contains("gate FAILED"), "{text}");
+    }
+}

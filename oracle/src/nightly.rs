@@ -1,0 +1,393 @@
+//! `cyclecheck fuzz`: the unattended nightly fuzz campaign, leaving a reproducible record.
+//!
+//! For each target ([`crate::fuzzing::Target`]), from the repository root:
+//!
+//! 1. `cargo +nightly fuzz run TARGET OUT/corpus/TARGET fuzz/corpus/TARGET -- -max_total_time=B
+//!    -dict=fuzz/gcode.dict -artifact_prefix=OUT/artifacts/TARGET/ -print_final_stats=1`:
+//!    libFuzzer writes new inputs to the scratch corpus (kept across nights when OUT is) and only
+//!    reads the committed seeds; a crash or divergence stops the target's run;
+//! 2. `cargo +nightly fuzz cmin TARGET OUT/corpus/TARGET`: minimizes the scratch corpus;
+//! 3. each finding (`crash-*`, `timeout-*`, `oom-*`, `leak-*` artifact) is minimized with
+//!    `cargo +nightly fuzz tmin`, copied to `tests/fuzz_regressions/TARGET/` (replayed by
+//!    `cargo test`, `tests/tests/fuzz_replay.rs`: commit it), and its report taken from the
+//!    target's body run in this process;
+//! 4. `OUT/summary.json` and `OUT/summary.txt`: per target the executions, execs/s, libFuzzer's
+//!    coverage (`cov`: edges, `ft`: features), corpus size before and after `cmin`, findings.
+//!
+//! The exit code is 1 when anything was found or a step failed, else 0.
+
+use crate::fuzzing::{self, Target};
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::Instant;
+
+/// What to run.
+#[derive(Clone, Debug)]
+pub struct Plan {
+    /// Seconds of fuzzing per target.
+    pub budget: u64,
+    pub targets: Vec<Target>,
+    /// Scratch corpus, artifacts and the summary.
+    pub out: PathBuf,
+    /// Cargo features of the fuzz crate (`planted-depth-bug` to show the campaign finds it).
+    pub features: Option<String>,
+    /// The repository root (holds `fuzz/`).
+    pub root: PathBuf,
+}
+
+/// libFuzzer's figures for one run, as it printed them.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct Stats {
+    pub executions: u64,
+    pub execs_per_sec: u64,
+    /// Covered edges (`cov:`) and features (`ft:`) at the last status line.
+    pub coverage_edges: u64,
+    pub features: u64,
+    pub new_units: u64,
+    pub peak_rss_mb: u64,
+}
+
+/// One finding, minimized and copied into the regression folder.
+#[derive(Clone, Debug, Serialize)]
+pub struct Finding {
+    pub artifact: String,
+    pub minimized: Option<String>,
+    pub regression: String,
+    /// The body's report in this build (`cyclecheck`), or why it does not reproduce here.
+    pub report: String,
+}
+
+/// The record of one target.
+#[derive(Clone, Debug, Serialize)]
+pub struct TargetSummary {
+    pub target: &'static str,
+    pub seconds: f64,
+    pub fuzz_exit: Option<i32>,
+    pub stats: Stats,
+    /// Files in the scratch corpus before and after `cmin`.
+    pub corpus_files: (usize, usize),
+    pub corpus_bytes: (u64, u64),
+    pub findings: Vec<Finding>,
+    /// Steps that failed to run (not findings): cargo errors and the like.
+    pub errors: Vec<String>,
+}
+
+/// Reads libFuzzer's output: the last status line (`#N ... cov: C ft: F corp: ... exec/s: E`)
+/// and the final stats (`stat::number_of_executed_units: N`, …), which take precedence.
+pub fn parse_stats(log: &str) -> Stats {
+    let mut s = Stats::default();
+    let field = |line: &str, key: &str| -> Option<u64> {
+        let mut words = line.split_whitespace();
+        words.by_ref().find(|w| *w == key)?;
+        words.next()?.parse().ok()
+    };
+    for line in log.lines() {
+        if let Some(rest) = line.strip_prefix('#') {
+            if let Some(n) = rest.split_whitespace().next().and_then(|n| n.parse().ok()) {
+                s.executions = n;
+            }
+            s.coverage_edges = field(line, "cov:").unwrap_or(s.coverage_edges);
+            s.features = field(line, "ft:").unwrap_or(s.features);
+            s.execs_per_sec = field(line, "exec/s:").unwrap_or(s.execs_per_sec);
+        }
+        let stat = |key: &str| line.strip_prefix(key).and_then(|v| v.trim().parse().ok());
+        if let Some(v) = stat("stat::number_of_executed_units:") {
+            s.executions = v;
+        }
+        if let Some(v) = stat("stat::average_exec_per_sec:") {
+            s.execs_per_sec = v;
+        }
+        if let Some(v) = stat("stat::new_units_added:") {
+            s.new_units = v;
+        }
+        if let Some(v) = stat("stat::peak_rss_mb:") {
+            s.peak_rss_mb = v;
+        }
+    }
+    s
+}
+
+fn dir_size(dir: &Path) -> (usize, u64) {
+    let Ok(entries) = std::fs::read_dir(dir) else { return (0, 0) };
+    entries
+        .filter_map(|e| e.ok()?.metadata().ok())
+        .filter(|m| m.is_file())
+        .fold((0, 0), |(n, b), m| (n + 1, b + m.len()))
+}
+
+fn cargo_fuzz(plan: &Plan, args: &[String]) -> Command {
+    let mut c = Command::new("cargo");
+    c.current_dir(&plan.root).arg("+nightly").arg("fuzz").args(args);
+    c
+}
+
+/// Runs a command, its stdout and stderr together, and returns (exit code, output).
+fn run_logged(mut cmd: Command, log: &Path) -> Result<(Option<i32>, String), String> {
+    let out = cmd.output().map_err(|e| format!("cannot run {cmd:?}: {e}"))?;
+    let mut text = String::from_utf8_lossy(&out.stdout).into_owned();
+    text.push_str(&String::from_utf8_lossy(&out.stderr));
+    let _ = std::fs::write(log, &text);
+    Ok((out.status.code(), text))
+}
+
+fn features_args(plan: &Plan) -> Vec<String> {
+    plan.features.iter().flat_map(|f| ["--features".to_string(), f.clone()]).collect()
+}
+
+/// Fuzzes one target (see the module documentation).
+pub fn run_target(plan: &Plan, target: Target) -> TargetSummary {
+    let name = target.name();
+    let started = Instant::now();
+    let corpus = plan.out.join("corpus").join(name);
+    let artifacts = plan.out.join("artifacts").join(name);
+    let logs = plan.out.join("logs");
+    let mut summary = TargetSummary {
+        target: name,
+        seconds: 0.0,
+        fuzz_exit: None,
+        stats: Stats::default(),
+        corpus_files: (0, 0),
+        corpus_bytes: (0, 0),
+        findings: Vec::new(),
+        errors: Vec::new(),
+    };
+    for d in [&corpus, &artifacts, &logs] {
+        if let Err(e) = std::fs::create_dir_all(d) {
+            summary.errors.push(format!("cannot create {}: {e}", d.display()));
+            return summary;
+        }
+    }
+    let seeds = plan.root.join("fuzz/corpus").join(name);
+    let mut args = vec!["run".to_string(), name.to_string()];
+    args.extend(features_args(plan));
+    args.extend([corpus.display().to_string(), seeds.display().to_string(), "--".to_string()]);
+    args.extend([
+        format!("-max_total_time={}", plan.budget),
+        format!("-dict={}", plan.root.join("fuzz/gcode.dict").display()),
+        format!("-artifact_prefix={}/", artifacts.display()),
+        "-print_final_stats=1".to_string(),
+        "-timeout=20".to_string(),
+        "-max_len=2048".to_string(),
+    ]);
+    match run_logged(cargo_fuzz(plan, &args), &logs.join(format!("{name}.run.log"))) {
+        Ok((code, log)) => {
+            summary.fuzz_exit = code;
+            summary.stats = parse_stats(&log);
+            if summary.stats.executions == 0 {
+                summary.errors.push(format!("no executions (exit {code:?}); see logs/{name}.run.log"));
+            }
+        }
+        Err(e) => summary.errors.push(e),
+    }
+    let before = dir_size(&corpus);
+    let mut cmin = vec!["cmin".to_string(), name.to_string()];
+    cmin.extend(features_args(plan));
+    cmin.push(corpus.display().to_string());
+    match run_logged(cargo_fuzz(plan, &cmin), &logs.join(format!("{name}.cmin.log"))) {
+        Ok((Some(0), _)) => {}
+        Ok((code, _)) => summary.errors.push(format!("cmin exited {code:?}; see logs/{name}.cmin.log")),
+        Err(e) => summary.errors.push(e),
+    }
+    let after = dir_size(&corpus);
+    summary.corpus_files = (before.0, after.0);
+    summary.corpus_bytes = (before.1, after.1);
+    summary.findings = findings(plan, target, &artifacts, &logs, &mut summary.errors);
+    summary.seconds = started.elapsed().as_secs_f64();
+    summary
+}
+
+/// Minimizes each artifact and copies it into the regression folder.
+fn findings(plan: &Plan, target: Target, artifacts: &Path, logs: &Path, errors: &mut Vec<String>) -> Vec<Finding> {
+    let name = target.name();
+    let mut out = Vec::new();
+    let Ok(entries) = std::fs::read_dir(artifacts) else { return out };
+    let mut files: Vec<PathBuf> = entries.filter_map(|e| Some(e.ok()?.path())).collect();
+    files.sort();
+    let regressions = plan.root.join("tests/fuzz_regressions").join(name);
+    for artifact in files {
+        let file = artifact.file_name().map(|f| f.to_string_lossy().into_owned()).unwrap_or_default();
+        if !["crash-", "timeout-", "oom-", "leak-"].iter().any(|p| file.starts_with(p)) {
+            continue;
+        }
+        let mut tmin = vec!["tmin".to_string(), name.to_string()];
+        tmin.extend(features_args(plan));
+        tmin.extend(["--runs".to_string(), "2000".to_string(), artifact.display().to_string()]);
+        let hash = file.split_once('-').map_or(file.as_str(), |(_, h)| h).to_string();
+        // tmin writes its steps to fuzz/artifacts/TARGET/minimized-from-*, and names the last
+        // one in its closing "Reproduce with:" line.
+        let minimized = match run_logged(cargo_fuzz(plan, &tmin), &logs.join(format!("{name}.tmin.{hash}.log"))) {
+            Ok((_, log)) => log
+                .split_whitespace()
+                .rfind(|w| w.contains("minimized-from-"))
+                .map(|w| plan.root.join("fuzz").join(w))
+                .filter(|p| p.is_file()),
+            Err(e) => {
+                errors.push(e);
+                None
+            }
+        };
+        let best = minimized.clone().unwrap_or_else(|| artifact.clone());
+        let regression = regressions.join(&file);
+        let copied = std::fs::create_dir_all(&regressions).and_then(|()| std::fs::copy(&best, &regression));
+        if let Err(e) = copied {
+            errors.push(format!("cannot copy {} to {}: {e}", best.display(), regression.display()));
+        }
+        let report = match std::fs::read(&best) {
+            Ok(bytes) => match std::panic::catch_unwind(|| target.run(&bytes)) {
+                Err(_) => "the body panicked in this process (see the run log)".to_string(),
+                Ok(Err(report)) => report,
+                Ok(Ok(())) => "does not reproduce in this build of cyclecheck (built without the fuzz run's features?)".to_string(),
+            },
+            Err(e) => format!("cannot read {}: {e}", best.display()),
+        };
+        out.push(Finding {
+            artifact: artifact.display().to_string(),
+            minimized: minimized.map(|m| m.display().to_string()),
+            regression: regression.display().to_string(),
+            report,
+        });
+    }
+    out
+}
+
+/// The whole campaign: every target, then `summary.json` and `summary.txt` in `plan.out`.
+/// Returns the summaries and the text summary.
+pub fn run(plan: &Plan) -> (Vec<TargetSummary>, String) {
+    let summaries: Vec<TargetSummary> = plan.targets.iter().map(|&t| run_target(plan, t)).collect();
+    let text = summary_text(plan, &summaries);
+    let json = serde_json::json!({
+        "budget_seconds_per_target": plan.budget,
+        "features": plan.features,
+        "targets": summaries,
+    });
+    let _ = std::fs::write(plan.out.join("summary.json"), serde_json::to_string_pretty(&json).unwrap_or_default());
+    let _ = std::fs::write(plan.out.join("summary.txt"), &text);
+    (summaries, text)
+}
+
+/// The text form of the summary.
+pub fn summary_text(plan: &Plan, summaries: &[TargetSummary]) -> String {
+    use std::fmt::Write as _;
+    let mut t = format!(
+        "cyclecheck fuzz: {} s per target{}\n",
+        plan.budget,
+        plan.features.as_deref().map(|f| format!(", features {f}")).unwrap_or_default()
+    );
+    let _ = writeln!(t, "{:16} {:>10} {:>8} {:>6} {:>7} {:>15} {:>8}", "target", "execs", "exec/s", "cov", "ft", "corpus (cmin)", "findings");
+    for s in summaries {
+        let _ = writeln!(
+            t,
+            "{:16} {:>10} {:>8} {:>6} {:>7} {:>6} → {:>6} {:>8}",
+            s.target,
+            s.stats.executions,
+            s.stats.execs_per_sec,
+            s.stats.coverage_edges,
+            s.stats.features,
+            s.corpus_files.0,
+            s.corpus_files.1,
+            s.findings.len()
+        );
+    }
+    for s in summaries {
+        for f in &s.findings {
+            let _ = writeln!(t, "\n{} FINDING {}\n  regression case: {}\n{}", s.target, f.artifact, f.regression, f.report);
+        }
+        for e in &s.errors {
+            let _ = writeln!(t, "\n{} ERROR {e}", s.target);
+        }
+    }
+    t
+}
+
+/// Writes the built-in seed corpus ([`fuzzing::seeds`]) into `root/fuzz/corpus/<target>/`.
+pub fn write_seeds(root: &Path) -> Result<usize, String> {
+    let mut n = 0;
+    for t in Target::ALL {
+        let dir = root.join("fuzz/corpus").join(t.name());
+        std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+        for (file, bytes) in fuzzing::seeds(t) {
+            std::fs::write(dir.join(&file), bytes).map_err(|e| format!("{file}: {e}"))?;
+            n += 1;
+        }
+    }
+    Ok(n)
+}
+
+/// `cyclecheck fuzz [--budget SECS] [--targets T,..] [--out DIR] [--features F]` or
+/// `cyclecheck fuzz --write-seeds`, run from the repository root: prints the text summary,
+/// returns the exit code (0 nothing found, 1 findings or a failed step).
+pub fn command(args: &[String]) -> Result<u8, String> {
+    let root = PathBuf::from(".");
+    if !root.join("fuzz/Cargo.toml").is_file() {
+        return Err("fuzz: run it from the repository root (no fuzz/Cargo.toml here)".to_string());
+    }
+    let mut plan = Plan { budget: 300, targets: Target::ALL.to_vec(), out: PathBuf::from("cyclecheck-out/fuzz"), features: None, root };
+    let mut it = args.iter();
+    while let Some(arg) = it.next() {
+        let mut value = |name: &str| it.next().cloned().ok_or_else(|| format!("{name} needs a value"));
+        match arg.as_str() {
+            "--budget" => {
+                let v = value("--budget")?;
+                plan.budget = v.parse().ok().filter(|&b| b > 0).ok_or_else(|| format!("--budget takes seconds > 0, not {v:?}"))?;
+            }
+            "--targets" => {
+                let v = value("--targets")?;
+                plan.targets = v
+                    .split(',')
+                    .map(|n| Target::by_name(n.trim()).ok_or_else(|| format!("--targets: no target {n:?}")))
+                    .collect::<Result<_, _>>()?;
+            }
+            "--out" => plan.out = PathBuf::from(value("--out")?),
+            "--features" => plan.features = Some(value("--features")?),
+            "--write-seeds" => {
+                let n = write_seeds(&plan.root)?;
+                println!("wrote {n} seed files under fuzz/corpus/");
+                return Ok(0);
+            }
+            other => return Err(format!("fuzz: unknown argument {other:?}")),
+        }
+    }
+    std::fs::create_dir_all(&plan.out).map_err(|e| format!("{}: {e}", plan.out.display()))?;
+    let (summaries, text) = run(&plan);
+    print!("{text}");
+    println!("summary: {}/summary.json, {}/summary.txt", plan.out.display(), plan.out.display());
+    let clean = summaries.iter().all(|s| s.findings.is_empty() && s.errors.is_empty());
+    Ok(if clean { 0 } else { 1 })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_libfuzzer_output() {
+        let log = "INFO: Seed: 1\n#2\tINITED cov: 100 ft: 120 corp: 3/10b exec/s: 0 rss: 30Mb\n\
+            #4096\tpulse  cov: 350 ft: 900 corp: 40/2Kb lim: 43 exec/s: 2048 rss: 40Mb\n\
+            #9000\tDONE   cov: 360 ft: 950 corp: 42/2Kb lim: 43 exec/s: 1500 rss: 41Mb\n\
+            Done 9000 runs in 6 second(s)\nstat::number_of_executed_units: 9001\n\
+            stat::average_exec_per_sec:     1500\nstat::new_units_added:          39\nstat::peak_rss_mb:              41\n";
+        assert_eq!(
+            parse_stats(log),
+            Stats { executions: 9001, execs_per_sec: 1500, coverage_edges: 360, features: 950, new_units: 39, peak_rss_mb: 41 }
+        );
+        assert_eq!(parse_stats("nothing here"), Stats::default());
+    }
+
+    #[test]
+    fn text_summary_lists_targets_and_findings() {
+        let plan = Plan { budget: 5, targets: vec![Target::DiffSpecImpl], out: "o".into(), features: None, root: ".".into() };
+        let s = TargetSummary {
+            target: "diff_spec_impl",
+            seconds: 5.0,
+            fuzz_exit: Some(77),
+            stats: Stats { executions: 10, execs_per_sec: 2, coverage_edges: 3, features: 4, new_units: 0, peak_rss_mb: 1 },
+            corpus_files: (9, 7),
+            corpus_bytes: (90, 70),
+            findings: vec![Finding { artifact: "a/crash-1".into(), minimized: None, regression: "r/crash-1".into(), report: "DIVERGE".into() }],
+            errors: vec![],
+        };
+        let t = summary_text(&plan, &[s]);
+        assert!(t.contains("diff_spec_impl") && t.contains("9 →      7") && t.contains("FINDING a/crash-1"), "{t}");
+    }
+}

@@ -1,0 +1,203 @@
+//! A reader of canonical expanded G-code (the format `cycle_vocab::text` prints and the README
+//! documents): the header comment, then one motion per block, `G00 X Z`, `G01 X Z F` or
+//! `G32 X Z F [Q] [K [J]] [R]`; pass and alarm comments are passed over.
+//!
+//! It reads the printed form back into motions on the integer grid, so a vendor's expander that
+//! prints G-code can be compared motion by motion, and so the printer is checked by a round
+//! trip (`crate::fuzzing`, target `gcode_roundtrip`). Blocks are split by the shared lexer
+//! (`cycle_vocab::Blocks`, PRJ.LEX); everything else in a block is an error naming its line and
+//! word: the format has one form of each motion.
+
+use cycle_vocab::text::fixed;
+use cycle_vocab::{Blocks, Grid, Increment, Move, MoveKind, Number, Units};
+
+/// One motion as the canonical form prints it (the rule tag is not printed).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Motion {
+    pub kind: MoveKind,
+    /// End X (diameter) and Z, increments.
+    pub x: i64,
+    pub z: i64,
+    /// Feed or lead, lead counts (0 for a rapid).
+    pub feed: i64,
+    /// Start angle, 0.001° (thread moves).
+    pub angle: u32,
+    /// Lead change per `lead_change_angle`, lead counts (thread moves).
+    pub lead_change: i64,
+    /// The angle of that change, 0.001° (360 000 when `J` is not printed and `K` is; else 0).
+    pub lead_change_angle: u32,
+    /// The floor of a shrinking lead, lead counts (0: none).
+    pub lead_floor: i64,
+}
+
+impl From<&Move> for Motion {
+    fn from(m: &Move) -> Motion {
+        Motion {
+            kind: m.kind,
+            x: m.x,
+            z: m.z,
+            feed: m.feed,
+            angle: m.angle,
+            lead_change: m.lead_change,
+            lead_change_angle: m.lead_change_angle,
+            lead_floor: m.lead_floor,
+        }
+    }
+}
+
+/// The header line of canonical G-code on `grid`.
+pub fn header(grid: Grid) -> String {
+    format!("(CYCLECHECK TRACE {} GRID {})", grid.unit_name(), fixed(1, grid.decimals()))
+}
+
+const GRIDS: [Grid; 4] = [
+    Grid { units: Units::Metric, increment: Increment::Isb },
+    Grid { units: Units::Metric, increment: Increment::Isc },
+    Grid { units: Units::Inch, increment: Increment::Isb },
+    Grid { units: Units::Inch, increment: Increment::Isc },
+];
+
+/// Reads canonical G-code: its grid (from the header) and its motions, in order.
+pub fn read(text: &[u8]) -> Result<(Grid, Vec<Motion>), String> {
+    let first = text.split(|&b| b == b'\n').next().unwrap_or_default();
+    let grid = GRIDS
+        .into_iter()
+        .find(|g| header(*g).as_bytes() == first)
+        .ok_or_else(|| format!("line 1: not a canonical trace header: {:?}", String::from_utf8_lossy(first)))?;
+    let mut motions = Vec::new();
+    for block in Blocks::new(text) {
+        let block = block.map_err(|a| format!("line {}: {} (word {:?})", a.line, a.code.text(), a.word.map(char::from)))?;
+        motions.push(motion(&block, grid)?);
+    }
+    Ok((grid, motions))
+}
+
+fn motion(block: &cycle_vocab::Block, grid: Grid) -> Result<Motion, String> {
+    let line = block.line;
+    let msg = |word: char, what: &str| format!("line {line}: word {word}: {what}");
+    let err = |word: char, what: &str| Err(msg(word, what));
+    let kind = match block.g_codes() {
+        [g] if !g.point && !g.negative && g.mantissa == 0 && g.decimals == 0 => MoveKind::Rapid,
+        [g] if !g.point && !g.negative && g.mantissa == 1 => MoveKind::Feed,
+        [g] if !g.point && !g.negative && g.mantissa == 32 => MoveKind::Thread,
+        [] => return err('G', "missing"),
+        _ => return err('G', "not one of G00, G01, G32"),
+    };
+    let allowed: &[u8] = match kind {
+        MoveKind::Rapid => b"XZ",
+        MoveKind::Feed => b"XZF",
+        MoveKind::Thread => b"XZFQKJR",
+    };
+    if let Some(l) = block.letters().find(|l| !allowed.contains(l)) {
+        return err(l as char, "not part of this motion's canonical form");
+    }
+    let value = |letter: u8, places: u32| -> Result<Option<i64>, String> {
+        match block.get(letter) {
+            None => Ok(None),
+            Some(n) => exact(n, places).map(Some).map_err(|e| format!("line {line}: word {}: {e}", letter as char)),
+        }
+    };
+    let required = |letter: u8, places: u32| -> Result<i64, String> {
+        value(letter, places)?.ok_or_else(|| format!("line {line}: word {}: missing", letter as char))
+    };
+    let (dec, lead_dec) = (grid.decimals(), grid.lead_decimals());
+    let x = required(b'X', dec)?;
+    let z = required(b'Z', dec)?;
+    let feed = if kind == MoveKind::Rapid { 0 } else { required(b'F', lead_dec)? };
+    let count = |letter: u8| -> Result<Option<u32>, String> {
+        match block.get(letter) {
+            None => Ok(None),
+            Some(n) if n.point || n.negative => Err(msg(letter as char, "not a non-negative integer")),
+            Some(n) => u32::try_from(n.mantissa).map(Some).map_err(|_| msg(letter as char, "too large")),
+        }
+    };
+    let angle = count(b'Q')?.unwrap_or(0);
+    let lead_change = value(b'K', lead_dec)?.unwrap_or(0);
+    let lead_change_angle = match (lead_change, count(b'J')?) {
+        (0, Some(_)) => return err('J', "printed without K"),
+        (0, None) => 0,
+        (_, Some(360_000)) => return err('J', "360000 is not printed"),
+        (_, j) => j.unwrap_or(360_000),
+    };
+    let lead_floor = value(b'R', lead_dec)?.unwrap_or(0);
+    Ok(Motion { kind, x, z, feed, angle, lead_change, lead_change_angle, lead_floor })
+}
+
+/// A printed value with exactly `places` decimals (the canonical form prints every digit).
+fn exact(n: Number, places: u32) -> Result<i64, String> {
+    if !n.point || u32::from(n.decimals) != places {
+        return Err(format!("not printed with exactly {places} decimals"));
+    }
+    n.scaled(places).map_err(|e| format!("{e:?}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::engine::{Engine, SpecEngine};
+    use cycle_vocab::Config;
+
+    #[test]
+    fn reads_the_manual_example_back() {
+        let t = SpecEngine.expand(b"G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\n", &Config::default());
+        let (grid, motions) = read(t.to_gcode().as_bytes()).unwrap();
+        assert_eq!(grid, t.grid);
+        assert_eq!(motions, t.moves().map(Motion::from).collect::<Vec<_>>());
+        assert!(motions.iter().any(|m| m.kind == MoveKind::Thread && m.feed == 30_000));
+    }
+
+    #[test]
+    fn reads_angle_and_lead_change() {
+        let inch = Grid { units: Units::Inch, increment: Increment::Isc };
+        let text = format!("{}\n(PASS 1 ROUGH DEPTH 0.00100)\nG32 X1.00000 Z-0.50000 F0.10000 Q180000 K-0.00005\nG32 X1.00000 Z-0.90000 F0.10000 K-0.00005 J90000 R0.00005\n(ALARM 2001 LINE 3 WORD P RULE G76.REQUIRED)\n", header(inch));
+        let (grid, m) = read(text.as_bytes()).unwrap();
+        assert_eq!(grid, inch);
+        let first = Motion {
+            kind: MoveKind::Thread,
+            x: 100_000,
+            z: -50_000,
+            feed: 10_000,
+            angle: 180_000,
+            lead_change: -5,
+            lead_change_angle: 360_000,
+            lead_floor: 0,
+        };
+        let second = Motion { z: -90_000, angle: 0, lead_change_angle: 90_000, lead_floor: 5, ..first };
+        assert_eq!(m, vec![first, second]);
+        let printed = cycle_vocab::text::Trace {
+            grid: inch,
+            events: vec![cycle_vocab::Event::Move(cycle_vocab::Move::variable_thread(
+                100_000,
+                -90_000,
+                10_000,
+                0,
+                -5,
+                90_000,
+                5,
+                cycle_vocab::Rule::G162I,
+            ))],
+            alarm: None,
+        };
+        assert_eq!(read(printed.to_gcode().as_bytes()).unwrap().1, vec![second]);
+    }
+
+    #[test]
+    fn rejects_what_is_not_canonical() {
+        let h = header(Grid::METRIC_ISB);
+        for (body, needle) in [
+            ("G00 X1.000 Z1.000 F1.0000", "word F"),
+            ("G01 X1.000 Z1.000", "word F: missing"),
+            ("G00 X1 Z1.000", "word X: not printed with exactly 3 decimals"),
+            ("G02 X1.000 Z1.000", "word G"),
+            ("X1.000 Z1.000", "word G: missing"),
+            ("G32 X1.000 Z1.000 F1.0000 Q1.5", "word Q"),
+            ("G32 X1.000 Z1.000 F1.0000 J90000", "word J: printed without K"),
+            ("G32 X1.000 Z1.000 F1.0000 K0.0001 J360000", "word J: 360000"),
+            ("G00 X1.000 Z1.000 #", "line 2"),
+        ] {
+            let e = read(format!("{h}\n{body}\n").as_bytes()).unwrap_err();
+            assert!(e.contains(needle), "{body}: {e}");
+        }
+        assert!(read(b"G00 X1.000 Z1.000\n").unwrap_err().contains("header"));
+    }
+}
