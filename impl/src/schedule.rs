@@ -105,17 +105,19 @@ fn sqrt_depth(q: &Norm, n: u32) -> Rough {
 }
 
 /// round(√v), half up (`fixed::sqrt_round`).
-#[cfg(not(feature = "planted-depth-bug"))]
 fn root(v: u128) -> u128 {
+    if cfg!(feature = "planted-depth-bug") {
+        return planted_root(v);
+    }
     sqrt_round(v)
 }
 
-/// TEST AID, never for production: the feature `planted-depth-bug` plants a one-increment
-/// error in the G76.DEPTH.1 rounding — r + 1 instead of r when v = r² + r (the comparison
-/// `≥ r` where `> r` is right: √(r² + r) < r + ½) — so that the harness can be shown to find
-/// it (README, "Fuzzing"). With Δd = 1 increment this is pass 2 (√2 → 2 instead of 1).
-#[cfg(feature = "planted-depth-bug")]
-fn root(v: u128) -> u128 {
+/// TEST AID, never for production, used only with the feature `planted-depth-bug` (off by
+/// default): a one-increment error in the G76.DEPTH.1 rounding — r + 1 instead of r when
+/// v = r² + r (the comparison `≥ r` where `> r` is right: √(r² + r) < r + ½) — so that the
+/// harness can be shown to find it (README, "Fuzzing"). With Δd = 1 increment this is pass 2
+/// (√2 → 2 instead of 1).
+fn planted_root(v: u128) -> u128 {
     let r = crate::fixed::isqrt(v);
     if r > 0 && v - r * r >= r {
         r + 1
