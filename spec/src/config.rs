@@ -20,10 +20,10 @@ fn within(v: i64, lo: i64, hi: i64, word: Option<u8>, rule: Rule) -> Result<(), 
 
 /// Checks, in this order: the start point (|X|, |Z| ≤ N: COM.RANGES, word X / Z), No.19
 /// (G92.JK.1), No.0018 bit 6 (G92.HOLD), 5130 and 5131 (G76.PULLOUT), 5140, 5141, 5142, 5143
-/// (G76.DEFAULTS), 5144 (G78.MODE), 5145 (G78.DEPTHMODE), `max_passes` (PRJ.MAXPASS), and under
-/// `fanuc` 5143 ∈ {80, 60, 55, 30, 29, 0} (F76.FORMAT). An illegal value is `OUT OF RANGE` on
-/// line 0 (the configuration). No.107 is legal in any value up to 999 999; a value other than 0
-/// is refused when a G92 cycle runs (G92.JK.8).
+/// (G76.DEFAULTS), 5144 (G78.MODE), 5145 (G78.DEPTHMODE), `max_passes` (PRJ.MAXPASS), under
+/// `fanuc` 5143 ∈ {80, 60, 55, 30, 29, 0} (F76.FORMAT), and `x_radius` ≤ 1 (NC201.XMODE, every
+/// dialect). An illegal value is `OUT OF RANGE` on line 0 (the configuration). No.107 is legal in
+/// any value up to 999 999; a value other than 0 is refused when a G92 cycle runs (G92.JK.8).
 pub fn check(config: &Config) -> Result<(), Alarm> {
     let p = &config.params;
     within(config.start_x, -N, N, Some(b'X'), Rule::ComRanges)?;
@@ -43,5 +43,6 @@ pub fn check(config: &Config) -> Result<(), Alarm> {
     if config.dialect == Dialect::Fanuc && !fanuc_angle(p.p5143_tool_angle) {
         return Err(Alarm::new(AlarmCode::OutOfRange, None, Rule::F76Format, 0));
     }
+    within(p.x_radius as i64, 0, 1, None, Rule::Nc201XMode)?;
     Ok(())
 }

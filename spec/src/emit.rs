@@ -34,13 +34,19 @@ impl Out {
     fn go(&mut self, kind: MoveKind, x: i128, z: i128, feed: i64, angle: u32, rule: Rule, line: u32) -> Result<(), Alarm> {
         let x = coordinate(x, b'X', line)?;
         let z = coordinate(z, b'Z', line)?;
-        if x == self.x && z == self.z {
-            return Ok(());
-        }
-        self.events.push(Event::Move(Move { kind, x, z, feed, angle, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule }));
-        self.x = x;
-        self.z = z;
+        let m = Move { kind, x, z, feed, angle, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule };
+        self.push(m);
         Ok(())
+    }
+
+    /// PRJ.NOOP: appends `m` unless it ends at the current position.
+    fn push(&mut self, m: Move) {
+        if m.x == self.x && m.z == self.z {
+            return;
+        }
+        self.events.push(Event::Move(m));
+        self.x = m.x;
+        self.z = m.z;
     }
 
     /// A rapid (`G00`) to (x, z).
@@ -56,6 +62,26 @@ impl Out {
     /// A spindle-synchronized move (`G32`) with `lead` and start `angle` (0.001°).
     pub fn thread(&mut self, x: i128, z: i128, lead: i64, angle: u32, rule: Rule, line: u32) -> Result<(), Alarm> {
         self.go(MoveKind::Thread, x, z, lead, angle, rule, line)
+    }
+}
+
+/// A variable lead (G34, G162.I, docs/INTERPRETATION.md "Trace"): `change` lead counts per
+/// `change_angle` (0.001°), held once a shrinking lead is ≤ `floor` (0: none). All 0: constant.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct LeadLaw {
+    pub change: i64,
+    pub change_angle: u32,
+    pub floor: i64,
+}
+
+impl Out {
+    /// A spindle-synchronized move whose lead starts at `lead` and follows `law`.
+    #[allow(clippy::too_many_arguments)]
+    pub fn variable_thread(&mut self, x: i128, z: i128, lead: i64, angle: u32, law: LeadLaw, rule: Rule, line: u32) -> Result<(), Alarm> {
+        let x = coordinate(x, b'X', line)?;
+        let z = coordinate(z, b'Z', line)?;
+        self.push(Move::variable_thread(x, z, lead, angle, law.change, law.change_angle, law.floor, rule));
+        Ok(())
     }
 }
 

@@ -1,5 +1,5 @@
 //! Executable reference spec of the lathe thread canned cycles G92 (M002), G76 (M001, M003
-//! FANUC-style) and G78 (M000).
+//! FANUC-style), G78 (M000) and G162 (M004), and of the thread moves G32, G33, G34 (M003).
 //!
 //! A certification reference: clarity first, exact integer arithmetic, each rule a small
 //! function whose doc comment names its rule ID (`docs/RULES.md`) and source manual key. Every
@@ -14,17 +14,21 @@
 //! | [`g92`] | G92.* |
 //! | [`pullout`] | G92.PULLOUT, G76.PULLOUT, G78.PULLOUT geometry, COM.LONGAXIS |
 //! | [`multipass`] | G76.*, G78.*, F76.*, PRJ.MAXPASS |
+//! | [`g162`] | G162.* (M004, `nc201`), NC201.* in [`program`] |
+//! | [`thread_moves`] | G32, G33, G34 (M003) |
 //! | [`emit`] | PRJ.TRACE, PRJ.NOOP, COM.MULTISTART |
 #![forbid(unsafe_code)]
 
 pub mod config;
 pub mod emit;
 pub mod exact;
+pub mod g162;
 pub mod g92;
 pub mod multipass;
 pub mod program;
 pub mod pullout;
 pub mod tangent;
+pub mod thread_moves;
 pub mod words;
 
 use cycle_vocab::text::Trace;
@@ -58,3 +62,5 @@ pub fn expand(program: &[u8], config: &Config) -> Trace {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_g162;

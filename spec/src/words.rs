@@ -66,11 +66,7 @@ pub fn integer(n: Number, word: u8, lo: i64, hi: i64, rule: Rule, line: u32) -> 
 /// (inch) in both increment systems; range 0.0001…9999 mm / 0.00001…9.99 in.
 pub fn lead_from_f(n: Number, grid: Grid, line: u32) -> Result<i64, Alarm> {
     let v = n.scaled(grid.lead_decimals()).map_err(|e| number_alarm(e, b'F', line))?;
-    let max = match grid.units {
-        Units::Metric => 99_990_000,
-        Units::Inch => 999_000,
-    };
-    within(v, 1, max, b'F', Rule::ComRanges, line)
+    within(v, 1, lead_max(grid), b'F', Rule::ComRanges, line)
 }
 
 /// COM.LEAD (M001, M002): I is threads per inch (0.0001…254 metric, 0.0001…100 inch, at most 4
@@ -86,6 +82,45 @@ pub fn lead_from_i(n: Number, grid: Grid, line: u32) -> Result<i64, Alarm> {
     let i4 = within(i4, 1, max, b'I', Rule::ComRanges, line)?;
     let lead = crate::exact::round_div(numerator, i4 as i128);
     Ok(lead as i64)
+}
+
+/// COM.LEAD (M001, M002): the largest lead, lead counts: 9999 mm (metric), 9.99 in (inch).
+pub fn lead_max(grid: Grid) -> i64 {
+    match grid.units {
+        Units::Metric => 99_990_000,
+        Units::Inch => 999_000,
+    }
+}
+
+/// A signed value on the lead grid (G162 I, G34 K, docs/INTERPRETATION.md): `|v| ≤ max`, else
+/// `OUT OF RANGE` under `rule`.
+pub fn signed_lead(n: Number, word: u8, grid: Grid, max: i64, rule: Rule, line: u32) -> Result<i64, Alarm> {
+    let v = n.scaled(grid.lead_decimals()).map_err(|e| number_alarm(e, word, line))?;
+    within(v, -max, max, word, rule, line)
+}
+
+/// A feed on the lead grid (G162.H): `1 ≤ v ≤ hi`, else `OUT OF RANGE` under `rule`.
+pub fn feed(n: Number, word: u8, grid: Grid, hi: i64, rule: Rule, line: u32) -> Result<i64, Alarm> {
+    let v = n.scaled(grid.lead_decimals()).map_err(|e| number_alarm(e, word, line))?;
+    within(v, 1, hi, word, rule, line)
+}
+
+/// An angle in degrees on the 0.001° grid (G162 B, J): `lo ≤ v ≤ hi` in 0.001°, else
+/// `OUT OF RANGE` under `rule`.
+pub fn millidegrees(n: Number, word: u8, lo: i64, hi: i64, rule: Rule, line: u32) -> Result<i64, Alarm> {
+    let v = n.scaled(3).map_err(|e| number_alarm(e, word, line))?;
+    within(v, lo, hi, word, rule, line)
+}
+
+/// G162.A (M004, docs/INTERPRETATION.md): the infeed angle in half degrees. Read on the 0.1°
+/// grid (generic number errors); a value that is not a multiple of 0.5° is `PRECISION` on A,
+/// rule G162.A; |A| > 89° is `OUT OF RANGE` on A, rule G162.A.
+pub fn half_degrees(n: Number, word: u8, line: u32) -> Result<i64, Alarm> {
+    let tenths = n.scaled(1).map_err(|e| number_alarm(e, word, line))?;
+    if tenths % 5 != 0 {
+        return Err(alarm(AlarmCode::Precision, word, Rule::G162A, line));
+    }
+    within(tenths, -890, 890, word, Rule::G162A, line).map(|t| t / 5)
 }
 
 #[cfg(test)]
@@ -120,5 +155,28 @@ mod tests {
         assert_eq!(micron_length(num("2400"), b'P', &fanuc, 1, N, 1), Ok(2_400));
         assert_eq!(micron_length(num("2.4"), b'P', &fanuc, 1, N, 1), Ok(2_400));
         assert_eq!(micron_length(num("2400"), b'P', &Config::default(), 1, N, 1), Ok(2_400_000));
+    }
+
+    #[test]
+    fn g162_angles_feeds_and_signed_leads() {
+        let g = Grid::METRIC_ISB;
+        assert_eq!(half_degrees(num("27.5"), b'A', 1), Ok(55));
+        assert_eq!(half_degrees(num("-30"), b'A', 1), Ok(-60));
+        assert_eq!(half_degrees(num("30.00"), b'A', 1), Ok(60));
+        assert_eq!(half_degrees(num("27.3"), b'A', 1), Err(alarm(AlarmCode::Precision, b'A', Rule::G162A, 1)));
+        assert_eq!(half_degrees(num("27.25"), b'A', 1), Err(alarm(AlarmCode::Precision, b'A', Rule::ComUnits, 1)));
+        assert_eq!(half_degrees(num("89.5"), b'A', 1), Err(alarm(AlarmCode::OutOfRange, b'A', Rule::G162A, 1)));
+        assert_eq!(millidegrees(num("90.5"), b'B', 0, 360_000, Rule::G162B, 1), Ok(90_500));
+        assert_eq!(
+            millidegrees(num("360.001"), b'B', 0, 360_000, Rule::G162B, 1),
+            Err(alarm(AlarmCode::OutOfRange, b'B', Rule::G162B, 1))
+        );
+        assert_eq!(signed_lead(num("-0.5"), b'I', g, lead_max(g), Rule::G162I, 1), Ok(-5_000));
+        assert_eq!(
+            signed_lead(num("10000"), b'K', g, lead_max(g), Rule::G34, 1),
+            Err(alarm(AlarmCode::OutOfRange, b'K', Rule::G34, 1))
+        );
+        assert_eq!(feed(num("500"), b'H', g, N, Rule::G162H, 1), Ok(5_000_000));
+        assert_eq!(feed(num("0"), b'H', g, N, Rule::G162H, 1), Err(alarm(AlarmCode::OutOfRange, b'H', Rule::G162H, 1)));
     }
 }

@@ -71,6 +71,7 @@ impl Move {
     /// A thread move whose lead starts at `lead` and changes by `change` per `change_angle`
     /// (0.001°), held once a shrinking lead is ≤ `floor` (0: no floor). A `change` of 0 gives the
     /// constant-lead form (all three fields 0).
+    #[allow(clippy::too_many_arguments)]
     pub const fn variable_thread(
         x: i64,
         z: i64,

@@ -1,0 +1,119 @@
+//! G32, G33, G34 — single thread moves (M003), under `gsk` and `fanuc`.
+//!
+//! One spindle-synchronized move from the current position to the end point: G32 at a constant
+//! lead, G33 with a spindle start angle P, G34 with a lead change K per revolution. They are
+//! modal motion codes (handled by [`crate::program`]); this module checks one move (check step
+//! 5) and emits it (docs/INTERPRETATION.md, "G32, G33, G34").
+
+use crate::emit::{LeadLaw, Out};
+use crate::g162::long_travel_twice;
+use crate::words::{alarm, lead_max};
+use cycle_vocab::{Alarm, AlarmCode, Grid, Rule};
+
+/// Which thread move.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ThreadCode {
+    G32,
+    G33,
+    G34,
+}
+
+impl ThreadCode {
+    /// The rule each move is tagged with.
+    pub fn rule(self) -> Rule {
+        match self {
+            ThreadCode::G32 => Rule::G32,
+            ThreadCode::G33 => Rule::G33,
+            ThreadCode::G34 => Rule::G34,
+        }
+    }
+}
+
+/// One thread move, its words resolved.
+#[derive(Clone, Copy, Debug)]
+pub struct ThreadMove {
+    pub code: ThreadCode,
+    /// The current position (X diameter, Z).
+    pub from: (i128, i128),
+    /// The end point (X diameter, Z).
+    pub to: (i128, i128),
+    /// The lead (modal feed), lead counts.
+    pub lead: i64,
+    /// G33 P: the spindle start angle, 0.001° (0 when omitted or not G33).
+    pub angle: u32,
+    /// G34 K: lead change per revolution, lead counts (0 otherwise).
+    pub k: i64,
+    pub line: u32,
+}
+
+/// G34 (M003): the lead at the end of the move, L² = F² + K·s2 (s2 twice the long-axis travel in
+/// lead counts), must stay above 0 (K < 0) and within the F range (K > 0); else `GEOMETRY` on K.
+pub fn lead_stays_legal(lead: i64, k: i64, s2: i128, grid: Grid, line: u32) -> Result<(), Alarm> {
+    let (f, fmax) = (lead as i128, lead_max(grid) as i128);
+    let end_squared = f * f + k as i128 * s2;
+    let legal = match k.signum() {
+        -1 => end_squared > 0,
+        1 => end_squared <= fmax * fmax,
+        _ => true,
+    };
+    if legal {
+        Ok(())
+    } else {
+        Err(alarm(AlarmCode::Geometry, b'K', Rule::G34, line))
+    }
+}
+
+/// G34 (M003): the trace's lead law, K per revolution (360 000 in 0.001°), no floor.
+pub fn g34_law(k: i64) -> LeadLaw {
+    if k == 0 {
+        LeadLaw::default()
+    } else {
+        LeadLaw { change: k, change_angle: 360_000, floor: 0 }
+    }
+}
+
+/// G32 / G33 / G34 (M003): checks a G34 lead, then emits the one move (PRJ.NOOP: not when it
+/// ends at the current position).
+pub fn expand(m: &ThreadMove, grid: Grid, out: &mut Out) -> Result<(), Alarm> {
+    let law = match m.code {
+        ThreadCode::G34 => {
+            let s2 = long_travel_twice(m.to.1 - m.from.1, m.to.0 - m.from.0, grid);
+            lead_stays_legal(m.lead, m.k, s2, grid, m.line)?;
+            g34_law(m.k)
+        }
+        ThreadCode::G32 | ThreadCode::G33 => LeadLaw::default(),
+    };
+    out.variable_thread(m.to.0, m.to.1, m.lead, m.angle, law, m.code.rule(), m.line)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// G34: F 2 mm, K −0.1 mm/rev over 20 mm of Z (ISB): L² = 2² − 2·0.1·20 = 0 → the lead would
+    /// reach 0 at the end: refused; over 19.999 mm it stays positive.
+    #[test]
+    fn shrinking_lead_must_stay_positive() {
+        let g = Grid::METRIC_ISB;
+        let s2 = long_travel_twice(-20_000, 0, g);
+        assert_eq!(lead_stays_legal(20_000, -1_000, s2, g, 3), Err(alarm(AlarmCode::Geometry, b'K', Rule::G34, 3)));
+        let s2 = long_travel_twice(-19_999, 0, g);
+        assert!(lead_stays_legal(20_000, -1_000, s2, g, 3).is_ok());
+        assert!(lead_stays_legal(20_000, 1_000, s2, g, 3).is_ok());
+        assert!(lead_stays_legal(20_000, 0, s2, g, 3).is_ok());
+    }
+
+    #[test]
+    fn growing_lead_stays_in_range() {
+        let g = Grid::METRIC_ISB;
+        // F 9000 mm, K 10 mm/rev: L² = 9000² + 2·10·ΔZ ≤ 9999² needs ΔZ ≤ 949 000.05 mm.
+        assert!(lead_stays_legal(90_000_000, 100_000, long_travel_twice(949_000_050, 0, g), g, 1).is_ok());
+        assert!(lead_stays_legal(90_000_000, 100_000, long_travel_twice(949_000_051, 0, g), g, 1).is_err());
+    }
+
+    #[test]
+    fn laws() {
+        assert_eq!(g34_law(0), LeadLaw::default());
+        assert_eq!(g34_law(-5), LeadLaw { change: -5, change_angle: 360_000, floor: 0 });
+    }
+}
