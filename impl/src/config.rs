@@ -10,11 +10,12 @@ fn out(word: Option<u8>, rule: Rule) -> Alarm {
 }
 
 /// COM.RANGES, G92.JK.1, G92.JK.8, G92.HOLD, G76.PULLOUT, G76.DEFAULTS, G78.MODE,
-/// G78.DEPTHMODE, PRJ.MAXPASS, F76.FORMAT: the configuration, in the register's order.
+/// G78.DEPTHMODE, PRJ.MAXPASS, F76.FORMAT, NC201.XMODE: the configuration, in the register's
+/// order.
 pub fn check(c: &Config) -> Result<(), Alarm> {
     let p = &c.params;
     let length = |v: i64| (0..=MAX_LENGTH).contains(&v);
-    let checks: [(bool, Option<u8>, Rule); 15] = [
+    let checks: [(bool, Option<u8>, Rule); 16] = [
         (c.start_x.unsigned_abs() <= MAX_LENGTH.unsigned_abs(), Some(b'X'), Rule::ComRanges),
         (c.start_z.unsigned_abs() <= MAX_LENGTH.unsigned_abs(), Some(b'Z'), Rule::ComRanges),
         (p.no19_pullout <= 255, None, Rule::G92Jk1),
@@ -29,7 +30,9 @@ pub fn check(c: &Config) -> Result<(), Alarm> {
         (p.p5144_infeed_mode <= 4, None, Rule::G78Mode),
         (p.p5145_depth_mode <= 1, None, Rule::G78DepthMode),
         ((1..=1_000_000).contains(&p.max_passes), None, Rule::PrjMaxPass),
-        (c.dialect == Dialect::Gsk || FANUC_ANGLES.contains(&p.p5143_tool_angle), None, Rule::F76Format),
+        (c.dialect != Dialect::Fanuc || FANUC_ANGLES.contains(&p.p5143_tool_angle), None, Rule::F76Format),
+        // Checked under every dialect, read only under nc201.
+        (p.x_radius <= 1, None, Rule::Nc201XMode),
     ];
     match checks.iter().find(|(ok, _, _)| !ok) {
         Some(&(_, word, rule)) => Err(out(word, rule)),

@@ -1,4 +1,5 @@
-//! Production expander of the lathe thread cycles G92, G76, G78 and FANUC-style G76.
+//! Production expander of the lathe thread cycles G92, G76, G78, FANUC-style G76 and G162
+//! (`nc201`), and of the thread moves G32, G33, G34.
 //!
 //! `no_std`, no heap, no floating point, no `unsafe`, no panics: [`Expander`] is a streaming
 //! iterator over the trace events of a program (PRJ.TRACE), computed on the integer grid with
@@ -7,7 +8,8 @@
 //!
 //! Modules: [`schedule`] (rough-pass depths), [`fixed`] (exact integer helpers and the tangent
 //! table), `words` (word values and ranges), `modal` (block interpreter and check order),
-//! `g92`, `multipass` (G76/G78), `pullout`, `emit` (the per-pass move state machine), `config`.
+//! `g92`, `multipass` (G76/G78), `pullout`, `emit` (the per-pass move state machine), [`g162`]
+//! (depth split, checks and its own move state machine), `thread_move` (G32/G33/G34), `config`.
 #![no_std]
 #![forbid(unsafe_code)]
 #![cfg_attr(
@@ -25,23 +27,43 @@
 mod config;
 mod emit;
 pub mod fixed;
+pub mod g162;
 mod g92;
 mod modal;
 mod multipass;
 mod pullout;
 pub mod schedule;
+mod thread_move;
 mod words;
 
 use cycle_vocab::{Alarm, Blocks, Config, Event};
-use emit::Cycle;
 use modal::{Action, Machine};
+
+/// The cycle being expanded.
+// No heap: the cycle state lives in the expander; boxing is not an option.
+#[allow(clippy::large_enum_variant)]
+enum Running {
+    /// G92, G76, G78.
+    Thread(emit::Cycle),
+    /// G162.
+    G162(g162::Cycle),
+}
+
+impl Running {
+    fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
+        match self {
+            Running::Thread(c) => c.next_event(pos),
+            Running::G162(c) => c.next_event(pos),
+        }
+    }
+}
 
 /// Streaming expansion of a program: one trace event per call of `next`, the alarm last.
 pub struct Expander<'a> {
     blocks: Blocks<'a>,
     machine: Machine,
     /// The cycle being expanded, if any.
-    cycle: Option<Cycle>,
+    cycle: Option<Running>,
     /// The configuration has been checked.
     checked: bool,
     /// M02/M30 was read: nothing after that block.
@@ -107,7 +129,8 @@ impl Iterator for Expander<'_> {
                     self.ended = end;
                     match action {
                         Action::Nothing => {}
-                        Action::Cycle(c) => self.cycle = Some(c),
+                        Action::Cycle(c) => self.cycle = Some(Running::Thread(c)),
+                        Action::G162(c) => self.cycle = Some(Running::G162(c)),
                         Action::Move(m) => {
                             // PRJ.NOOP: a move to the current position is not emitted.
                             if (m.x, m.z) != self.machine.pos {

@@ -1,14 +1,18 @@
-//! The modal interpreter (PRJ.MODAL, PRJ.WORD, PRJ.SUPPORTED, COM.ABSINC, COM.LEAD): one block
-//! in, at most one action out, with the check order of docs/INTERPRETATION.md — (2) G and M
-//! codes, conflicts, allowed words alphabetically; (3) values alphabetically; (4) missing words;
-//! (5) the cycle's own checks.
+//! The modal interpreter (PRJ.MODAL, PRJ.WORD, PRJ.SUPPORTED, PRJ.DIALECT, COM.ABSINC,
+//! NC201.ABSINC, NC201.XMODE, COM.LEAD): one block in, at most one action out, with the check
+//! order of docs/INTERPRETATION.md — (2) G and M codes, conflicts, allowed words alphabetically;
+//! (3) values alphabetically; (4) missing words; (5) the cycle's own checks.
 
 use crate::emit::Cycle;
+use crate::g162::{self, max_lead, SplitParams};
 use crate::g92::{self, G92State};
 use crate::multipass::{self, Code, FirstBlock, Second};
-use crate::words::{integer_in, lead_f, lead_i, length_in, signed_length, At, MAX_G92_JK};
+use crate::thread_move::{thread_move, ThreadCode, ThreadWords, MAX_START_ANGLE};
+use crate::words::{
+    infeed_angle, integer_in, lead_f, lead_i, length_in, scaled_in, signed_length, signed_lead, At, MAX_G92_JK,
+};
 use cycle_vocab::params::MAX_LENGTH;
-use cycle_vocab::{Alarm, AlarmCode, Block, Config, Dialect, Move, Rule, Units};
+use cycle_vocab::{Alarm, AlarmCode, Block, Config, Dialect, Move, Number, Rule, Units};
 
 /// The modal motion mode.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -16,6 +20,8 @@ pub enum Mode {
     Rapid,
     Feed,
     G92,
+    /// G32, G33, G34 (PRJ.MODAL, M003).
+    Thread(ThreadCode),
 }
 
 /// What a block asks of the expander.
@@ -26,6 +32,7 @@ pub enum Action {
     Nothing,
     Move(Move),
     Cycle(Cycle),
+    G162(g162::Cycle),
 }
 
 /// How the block's words are read (its code, or the modal mode).
@@ -36,6 +43,8 @@ enum Kind {
     G92,
     First(Code),
     Second(Code),
+    Thread(ThreadCode),
+    G162,
 }
 
 /// The machine state carried from block to block.
@@ -50,6 +59,8 @@ pub struct Machine {
     g92: G92State,
     g76: FirstBlock,
     g78: FirstBlock,
+    /// NC201.ABSINC: G91 in force (`nc201` only).
+    incremental: bool,
 }
 
 /// The converted words of one block; `None` where absent.
@@ -68,6 +79,13 @@ struct Vals {
     w: Option<i64>,
     x: Option<i64>,
     z: Option<i64>,
+    /// G162 words: A (half degrees), B and J (0.001°, J in `j`), H (lead counts), I (pitch
+    /// change, lead counts), V (radius).
+    a: Option<i64>,
+    b: Option<i64>,
+    h: Option<i64>,
+    pitch_change: Option<i64>,
+    v: Option<i64>,
 }
 
 /// Words every block accepts (no motion effect).
@@ -76,7 +94,13 @@ const COMMON: &[u8] = b"MNOST";
 /// PRJ.WORD, PRJ.DIALECT: the words a block of `kind` accepts besides G and [`COMMON`].
 fn allowed(kind: Kind, dialect: Dialect) -> &'static [u8] {
     match (kind, dialect) {
+        // NC201.ABSINC: U and W are no incremental addresses under nc201.
+        (Kind::Rapid | Kind::Feed, Dialect::Nc201) => b"FXZ",
         (Kind::Rapid | Kind::Feed, _) => b"FUWXZ",
+        (Kind::Thread(ThreadCode::G32), _) => b"FIUWXZ",
+        (Kind::Thread(ThreadCode::G33), _) => b"FIPUWXZ",
+        (Kind::Thread(ThreadCode::G34), _) => b"FIKUWXZ",
+        (Kind::G162, _) => b"ABFHIJPQVWXZ",
         (Kind::G92, _) => b"FIJKLRUWXZ",
         (Kind::First(_), Dialect::Fanuc) => b"PQR",
         (Kind::First(_), Dialect::Gsk | Dialect::Nc201) => b"DELPQR",
@@ -102,6 +126,7 @@ impl Machine {
             g92: G92State::new(),
             g76: FirstBlock::defaults(&config, Code::G76),
             g78: FirstBlock::defaults(&config, Code::G78),
+            incremental: false,
         }
     }
 
@@ -109,28 +134,44 @@ impl Machine {
     pub fn block(&mut self, b: &Block) -> Result<(Action, bool), Alarm> {
         let line = b.line;
         let at = |letter: u8| At { letter, line };
-        let (motion, end) = self.codes(b)?;
-        // (2) conflicts: X/U, Z/W, F/I (the two-motion-code conflict is found in `codes`).
+        let (motion, end, absinc) = self.codes(b)?;
+        let nc201 = self.config.dialect == Dialect::Nc201;
+        // (2) conflicts: X/U, Z/W, F/I (the two-motion-code and G90/G91 conflicts are found in
+        // `codes`). Under nc201 U and W are no incremental addresses and I is G162's pitch
+        // change, so none of these pairs exists there (NC201.ABSINC).
         for (first, second, rule) in
             [(b'X', b'U', Rule::ComAbsInc), (b'Z', b'W', Rule::ComAbsInc), (b'F', b'I', Rule::ComLead)]
         {
-            if b.has(first) && b.has(second) {
+            if !nc201 && b.has(first) && b.has(second) {
                 return Err(at(second).alarm(AlarmCode::Conflict, rule));
             }
         }
-        let axis = b.has(b'X') || b.has(b'U') || b.has(b'Z') || b.has(b'W');
+        if let Some(incremental) = absinc {
+            // NC201.ABSINC: modal, in force from the block that writes it.
+            self.incremental = incremental;
+        }
+        let axis = if nc201 {
+            b.has(b'X') || b.has(b'Z')
+        } else {
+            b.has(b'X') || b.has(b'U') || b.has(b'Z') || b.has(b'W')
+        };
         let kind = match motion {
             Some(76) if axis => Kind::Second(Code::G76),
             Some(76) => Kind::First(Code::G76),
             Some(78) if axis => Kind::Second(Code::G78),
             Some(78) => Kind::First(Code::G78),
             Some(92) => Kind::G92,
+            Some(32) => Kind::Thread(ThreadCode::G32),
+            Some(33) => Kind::Thread(ThreadCode::G33),
+            Some(34) => Kind::Thread(ThreadCode::G34),
+            Some(162) => Kind::G162,
             Some(1) => Kind::Feed,
             Some(_) => Kind::Rapid,
             None => match self.mode {
                 Mode::Rapid => Kind::Rapid,
                 Mode::Feed => Kind::Feed,
                 Mode::G92 => Kind::G92,
+                Mode::Thread(code) => Kind::Thread(code),
             },
         };
         // (2) allowed words, alphabetically.
@@ -157,25 +198,43 @@ impl Machine {
                 Action::Nothing
             }
             Kind::Second(code) => self.second(code, &v, line)?,
+            Kind::Thread(code) => self.thread(code, motion.is_some(), &v, axis, line)?,
+            Kind::G162 => self.g162(&v, line)?,
         };
         Ok((action, end))
     }
 
-    /// (2) PRJ.SUPPORTED, COM.UNITS, PRJ.WORD: the G codes in the order written, then M; the
-    /// block's motion/cycle code and whether it ends the program.
-    fn codes(&self, b: &Block) -> Result<(Option<u64>, bool), Alarm> {
+    /// (2) PRJ.SUPPORTED, PRJ.DIALECT, COM.UNITS, PRJ.WORD, NC201.ABSINC: the G codes in the
+    /// order written, then M; the block's motion/cycle code, whether it ends the program, and
+    /// its G90 (`Some(false)`) / G91 (`Some(true)`) under nc201.
+    fn codes(&self, b: &Block) -> Result<(Option<u64>, bool, Option<bool>), Alarm> {
         let line = b.line;
         let g_alarm = |code: AlarmCode, rule: Rule| Alarm::new(code, Some(b'G'), rule, line);
+        let dialect = self.config.dialect;
+        let nc201 = dialect == Dialect::Nc201;
         let mut motion = None;
         let mut motions = 0u32;
+        let mut absinc = None;
+        let mut absincs = 0u32;
         for g in b.g_codes() {
             if g.point || g.negative {
                 return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjSupported));
             }
             match g.mantissa {
-                0 | 1 | 92 | 76 => {}
-                78 if self.config.dialect == Dialect::Gsk => {}
-                78 => return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjDialect)),
+                0 | 1 => {}
+                // M003 / M001 / M002 codes are not defined for the M004 controller, and G162 only
+                // for it (PRJ.DIALECT).
+                92 | 76 | 32 | 33 | 34 if !nc201 => {}
+                78 if dialect == Dialect::Gsk => {}
+                162 if nc201 => {}
+                32 | 33 | 34 | 76 | 78 | 92 | 162 => {
+                    return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjDialect))
+                }
+                90 | 91 if nc201 => {
+                    absincs += 1;
+                    absinc = Some(g.mantissa == 91);
+                    continue;
+                }
                 20 if self.config.grid.units != Units::Inch => {
                     return Err(g_alarm(AlarmCode::Unsupported, Rule::ComUnits))
                 }
@@ -202,18 +261,27 @@ impl Machine {
         if motions > 1 {
             return Err(g_alarm(AlarmCode::Conflict, Rule::PrjWord));
         }
-        Ok((motion, end))
+        // NC201.ABSINC: G90 with G91, or either twice.
+        if absincs > 1 {
+            return Err(g_alarm(AlarmCode::Conflict, Rule::Nc201AbsInc));
+        }
+        Ok((motion, end, absinc))
     }
 
     /// (3) One word's value for a block of `kind` (COM.RANGES, COM.UNITS, COM.LEAD,
     /// F76.MICRONS, G76.MODE, G78.MODE, G78.DEPTHMODE, G76.FINISH, F76.FORMAT).
-    fn value(&self, kind: Kind, letter: u8, n: cycle_vocab::Number, at: At, v: &mut Vals) -> Result<(), Alarm> {
+    fn value(&self, kind: Kind, letter: u8, n: Number, at: At, v: &mut Vals) -> Result<(), Alarm> {
         let grid = self.config.grid;
         // F76.MICRONS: FANUC G76 P(k), Q(Δd), Q(Δdmin) without a decimal point are increments.
         let micro = self.config.dialect == Dialect::Fanuc;
         let n_max = MAX_LENGTH;
+        if kind == Kind::G162 {
+            return self.value_g162(letter, n, at, v);
+        }
         match (kind, letter) {
             (_, b'F') => v.lead = Some(lead_f(n, grid, at)?),
+            // NC201.XMODE: X of G00/G01 by `x_radius`.
+            (_, b'X') if self.config.dialect == Dialect::Nc201 => v.x = Some(self.x_word(n, at)?),
             (_, b'I') => v.lead = Some(lead_i(n, grid, at)?),
             (_, b'U') => v.u = Some(signed_length(n, grid, at)?),
             (_, b'W') => v.w = Some(signed_length(n, grid, at)?),
@@ -262,6 +330,14 @@ impl Machine {
             (Kind::Second(_), b'P') => v.p = Some(length_in(n, grid, micro, 1, n_max, at)?),
             (Kind::Second(_), b'Q') => v.q = Some(length_in(n, grid, micro, 1, n_max, at)?),
             (Kind::Second(_), b'R') => v.r = Some(signed_length(n, grid, at)?),
+            // G33: the start angle, integer 0.001°.
+            (Kind::Thread(ThreadCode::G33), b'P') => {
+                v.p = Some(integer_in(n, 0, MAX_START_ANGLE, Rule::G33, at)?);
+            }
+            // G34: the lead change per revolution, lead grid, signed.
+            (Kind::Thread(ThreadCode::G34), b'K') => {
+                v.k = Some(signed_lead(n, grid, max_lead(grid.units), Rule::G34, at)?);
+            }
             // M was checked with the codes; N, O, S, T have no value rule.
             _ => {}
         }
@@ -284,6 +360,24 @@ impl Machine {
         (x, z)
     }
 
+    /// NC201.ABSINC: the end point of a G00/G01 block under nc201 — X (a diameter count,
+    /// NC201.XMODE) and Z absolute under G90, distances from `from` under G91; an omitted axis
+    /// stays.
+    fn nc201_end_point(&self, v: &Vals, from: (i64, i64)) -> (i64, i64) {
+        let axis = |word: Option<i64>, here: i64| match word {
+            Some(w) if self.incremental => sat(i128::from(here) + i128::from(w)),
+            Some(w) => w,
+            None => here,
+        };
+        (axis(v.x, from.0), axis(v.z, from.1))
+    }
+
+    /// NC201.XMODE: an X (or G162 W) word under nc201 as a diameter count, |v| ≤ N as written.
+    fn x_word(&self, n: Number, at: At) -> Result<i64, Alarm> {
+        let v = signed_length(n, self.config.grid, at)?;
+        Ok(if self.config.params.x_radius == 1 { 2 * v } else { v })
+    }
+
     /// PRJ.MODAL: G00 / G01 blocks (and non-motion blocks in those modes).
     fn linear(&mut self, kind: Kind, coded: bool, v: &Vals, axis: bool, line: u32) -> Result<Action, Alarm> {
         if let Some(f) = v.lead {
@@ -295,7 +389,11 @@ impl Machine {
         if !axis {
             return Ok(Action::Nothing);
         }
-        let (x, z) = Self::end_point(v, self.pos, self.pos);
+        let (x, z) = if self.config.dialect == Dialect::Nc201 {
+            self.nc201_end_point(v, self.pos)
+        } else {
+            Self::end_point(v, self.pos, self.pos)
+        };
         if kind == Kind::Feed {
             // COM.LEAD: G01 with axis words needs a feed.
             let Some(f) = self.feed else {
@@ -403,5 +501,92 @@ impl Machine {
             Code::G78 => &self.g78,
         };
         Ok(Action::Cycle(multipass::cycle(&self.config, code, first, self.pos, &sec, line)?))
+    }
+
+    /// (3) One word of a G162 block (docs/INTERPRETATION.md, "Block and words"): the word
+    /// table's grids and ranges, each out-of-range value naming its rule.
+    fn value_g162(&self, letter: u8, n: Number, at: At, v: &mut Vals) -> Result<(), Alarm> {
+        let grid = self.config.grid;
+        let length = |lo: i64| length_in(n, grid, false, lo, MAX_LENGTH, at);
+        match letter {
+            b'A' => v.a = Some(infeed_angle(n, at)?),
+            b'B' => v.b = Some(scaled_in(n, 3, 0, 360_000, Rule::G162B, at)?),
+            b'F' => v.lead = Some(lead_f(n, grid, at)?),
+            b'H' => v.h = Some(scaled_in(n, grid.lead_decimals(), 1, MAX_LENGTH, Rule::G162H, at)?),
+            b'I' => v.pitch_change = Some(signed_lead(n, grid, max_lead(grid.units), Rule::G162I, at)?),
+            b'J' => v.j = Some(scaled_in(n, 3, 1, MAX_LENGTH, Rule::G162J, at)?),
+            b'P' => v.p = Some(length(1)?),
+            b'Q' => v.q = Some(length(1)?),
+            b'V' => v.v = Some(length(0)?),
+            // NC201.XMODE: the taper W in X units.
+            b'W' => v.w = Some(self.x_word(n, at)?),
+            b'X' => v.x = Some(self.x_word(n, at)?),
+            b'Z' => v.z = Some(signed_length(n, grid, at)?),
+            // M was checked with the codes; N, O, S, T have no value rule.
+            _ => {}
+        }
+        Ok(())
+    }
+
+    /// G32, G33, G34 (PRJ.MODAL, M003): modal thread moves. (4) a block with axis words needs a
+    /// lead (COM.LEAD), G34 its K (G34); (5) the G34 lead bound; then one thread move.
+    fn thread(&mut self, code: ThreadCode, coded: bool, v: &Vals, axis: bool, line: u32) -> Result<Action, Alarm> {
+        if let Some(f) = v.lead {
+            self.feed = Some(f);
+        }
+        if coded {
+            self.mode = Mode::Thread(code);
+        }
+        if !axis {
+            return Ok(Action::Nothing);
+        }
+        let missing = |word: u8, rule: Rule| Alarm::new(AlarmCode::MissingWord, Some(word), rule, line);
+        let lead = self.feed.ok_or(missing(b'F', Rule::ComLead))?;
+        let k = match (code, v.k) {
+            (ThreadCode::G34, None) => return Err(missing(b'K', Rule::G34)),
+            (_, k) => k.unwrap_or(0),
+        };
+        // P is 0…359 999 here.
+        let p = v.p.and_then(|p| u32::try_from(p).ok()).unwrap_or(0);
+        let to = Self::end_point(v, self.pos, self.pos);
+        let words = ThreadWords { lead, p, k };
+        Ok(Action::Move(thread_move(code, self.pos, to, &words, self.config.grid, line)?))
+    }
+
+    /// G162.FORMAT: (4) missing words — F (G162.F), H (G162.H), P/Q as a pair (G162.PQ), X, Z
+    /// (G162.FORMAT) — then the cycle's checks and the cycle. F sets the modal feed; without F
+    /// the modal feed is the lead whatever it was set for (G162.F).
+    fn g162(&mut self, v: &Vals, line: u32) -> Result<Action, Alarm> {
+        if let Some(f) = v.lead {
+            self.feed = Some(f);
+        }
+        let missing = |word: u8, rule: Rule| Alarm::new(AlarmCode::MissingWord, Some(word), rule, line);
+        let lead = self.feed.ok_or(missing(b'F', Rule::G162F))?;
+        let h = v.h.ok_or(missing(b'H', Rule::G162H))?;
+        let split = match (v.p, v.q) {
+            (Some(depth), Some(allowance)) => Some(SplitParams { depth, allowance }),
+            (None, Some(_)) => return Err(missing(b'P', Rule::G162Pq)),
+            (Some(_), None) => return Err(missing(b'Q', Rule::G162Pq)),
+            (None, None) => None,
+        };
+        let x = v.x.ok_or(missing(b'X', Rule::G162Format))?;
+        let z = v.z.ok_or(missing(b'Z', Rule::G162Format))?;
+        let angle = |a: Option<i64>, default: u32| a.and_then(|a| u32::try_from(a).ok()).unwrap_or(default);
+        let words = g162::Words {
+            x,
+            z,
+            incremental: self.incremental,
+            h,
+            split,
+            v: v.v.unwrap_or(0),
+            taper: v.w.unwrap_or(0),
+            a: v.a.unwrap_or(0),
+            lead,
+            b: angle(v.b, 0),
+            i: v.pitch_change.unwrap_or(0),
+            // G162.J: omitted → one revolution.
+            j: angle(v.j, 360_000),
+        };
+        Ok(Action::G162(g162::cycle(&self.config, &words, self.pos, line)?))
     }
 }

@@ -66,6 +66,36 @@ pub fn integer_in(n: Number, lo: i64, hi: i64, rule: Rule, at: At) -> Result<i64
     Ok(v)
 }
 
+/// A number on the grid of `places` decimals (generic errors as [`length`]) within
+/// `lo ≤ v ≤ hi`, else `OUT OF RANGE` with `rule` (G162 B, H, J).
+pub fn scaled_in(n: Number, places: u32, lo: i64, hi: i64, rule: Rule, at: At) -> Result<i64, Alarm> {
+    let v = n.scaled(places).map_err(|e| scale_error(e, at))?;
+    if v < lo || v > hi {
+        return Err(at.alarm(AlarmCode::OutOfRange, rule));
+    }
+    Ok(v)
+}
+
+/// A signed value on the lead grid with |v| ≤ `max`, else `OUT OF RANGE` with `rule` (G34 K,
+/// G162 I).
+pub fn signed_lead(n: Number, grid: Grid, max: i64, rule: Rule, at: At) -> Result<i64, Alarm> {
+    scaled_in(n, grid.lead_decimals(), -max, max, rule, at)
+}
+
+/// G162.A: the infeed angle in half degrees — read to 0.1° (more decimals: `PRECISION`,
+/// COM.UNITS), then a multiple of 0.5° (else `PRECISION`, G162.A), then |A| ≤ 89°
+/// (else `OUT OF RANGE`, G162.A).
+pub fn infeed_angle(n: Number, at: At) -> Result<i64, Alarm> {
+    let tenths = n.scaled(1).map_err(|e| scale_error(e, at))?;
+    if tenths % 5 != 0 {
+        return Err(at.alarm(AlarmCode::Precision, Rule::G162A));
+    }
+    if tenths.unsigned_abs() > 890 {
+        return Err(at.alarm(AlarmCode::OutOfRange, Rule::G162A));
+    }
+    Ok(tenths / 5)
+}
+
 /// COM.LEAD: F as lead counts (0.0001 mm / 0.00001 in), 1 … 99 990 000 (metric) or
 /// 1 … 999 000 (inch).
 pub fn lead_f(n: Number, grid: Grid, at: At) -> Result<i64, Alarm> {
@@ -144,6 +174,28 @@ mod tests {
         assert_eq!(
             lead_i(num(false, 100_001, 5, true), g, AT),
             Err(Alarm::new(AlarmCode::Precision, Some(b'X'), Rule::ComUnits, 7))
+        );
+    }
+
+    #[test]
+    fn g162_words() {
+        let g = Grid::METRIC_ISB;
+        let at = At { letter: b'A', line: 2 };
+        assert_eq!(infeed_angle(num(false, 275, 1, true), at), Ok(55));
+        assert_eq!(infeed_angle(num(true, 30, 0, false), at), Ok(-60));
+        assert_eq!(infeed_angle(num(false, 89, 0, false), at), Ok(178));
+        assert_eq!(infeed_angle(num(false, 273, 1, true), at), Err(Alarm::new(AlarmCode::Precision, Some(b'A'), Rule::G162A, 2)));
+        assert_eq!(infeed_angle(num(false, 895, 1, true), at), Err(Alarm::new(AlarmCode::OutOfRange, Some(b'A'), Rule::G162A, 2)));
+        assert_eq!(infeed_angle(num(false, 2725, 2, true), at), Err(Alarm::new(AlarmCode::Precision, Some(b'A'), Rule::ComUnits, 2)));
+        assert_eq!(signed_lead(num(true, 5, 1, true), g, 99_990_000, Rule::G162I, at), Ok(-5_000));
+        assert_eq!(
+            signed_lead(num(false, 10_000, 0, false), g, 99_990_000, Rule::G162I, at),
+            Err(Alarm::new(AlarmCode::OutOfRange, Some(b'A'), Rule::G162I, 2))
+        );
+        assert_eq!(scaled_in(num(false, 360, 0, false), 3, 0, 360_000, Rule::G162B, at), Ok(360_000));
+        assert_eq!(
+            scaled_in(num(false, 360_001, 3, true), 3, 0, 360_000, Rule::G162B, at),
+            Err(Alarm::new(AlarmCode::OutOfRange, Some(b'A'), Rule::G162B, 2))
         );
     }
 

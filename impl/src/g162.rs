@@ -1,0 +1,448 @@
+//! G162 multi-pass thread cycle of the Russian controller (M004, 4.2.13; `--dialect nc201`):
+//! the depth split (G162.PQ, G162.SPLIT) as a pure step function, the cycle's checks (step 5 of
+//! the check order) and the per-pass move state machine (G162.PATH), all in integers.
+//!
+//! Lengths are grid increments, X a diameter count, depths, P, Q and V radius counts; leads and
+//! feeds (F, H, I) lead counts; angles (B, J) 0.001°, A half degrees (docs/INTERPRETATION.md,
+//! "G162 (M004)").
+
+use crate::fixed::mul_tan;
+use cycle_vocab::{Alarm, AlarmCode, Config, Event, Move, Pass, PassKind, Rule, Units};
+
+/// The depth split of a multi-pass G162: P = thread depth, Q = allowance per pass (radius).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SplitParams {
+    /// P ≥ 1.
+    pub depth: i64,
+    /// Q ≥ 1.
+    pub allowance: i64,
+}
+
+/// One pass of the split.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Step {
+    /// 1-based pass number.
+    pub n: u32,
+    /// Radius depth from the thread's depth-0 line X0, increments.
+    pub depth: i64,
+    /// Whether this is the last pass (its depth is P).
+    pub last: bool,
+    /// G162.PQ (a full allowance Q) or G162.SPLIT (a part of the remainder).
+    pub rule: Rule,
+    /// 0: a full pass; 1…4: the split target D/2, 3D/4, 7D/8, P that set the depth.
+    pub stage: u8,
+}
+
+/// The split's numbers in their domain (P, Q ≥ 1), as unsigned magnitudes.
+struct Norm {
+    p: u64,
+    q: u64,
+    /// k = ⌊P / Q⌋ full passes.
+    k: u64,
+    /// D = P − kQ, the remainder (0 ≤ D < Q).
+    d: u64,
+}
+
+fn norm(sp: &SplitParams) -> Norm {
+    let p = sp.depth.max(1).unsigned_abs();
+    let q = sp.allowance.max(1).unsigned_abs();
+    let k = p / q;
+    Norm { p, q, k, d: p - k * q }
+}
+
+/// Eighths of the remainder reached by split target `stage` (1…4): D/2, D/2 + D/4, … + D/8, D.
+const EIGHTHS: [u64; 4] = [4, 6, 7, 8];
+
+/// G162.SPLIT: the depth of split target `stage` (1…4), kQ + D·e/8 rounded once half up (the
+/// last target is P exactly). `None` for another stage.
+fn target(q: &Norm, stage: u8) -> Option<u64> {
+    let e = EIGHTHS.get(usize::from(stage).checked_sub(1)?)?;
+    // D < Q ≤ 2^63, so D·8 + 4 fits u128 easily; the result is at most D.
+    let part = (u128::from(q.d) * u128::from(*e) + 4) / 8;
+    let part = u64::try_from(part).unwrap_or(u64::MAX);
+    Some((q.p - q.d).saturating_add(part))
+}
+
+fn step(n: u32, depth: u64, q: &Norm, stage: u8) -> Step {
+    let rule = if stage == 0 { Rule::G162Pq } else { Rule::G162Split };
+    Step { n, depth: i64::try_from(depth).unwrap_or(i64::MAX), last: depth >= q.p, rule, stage }
+}
+
+/// The first split target after stage `from` deeper than `prev`, as pass `n`.
+fn split_after(q: &Norm, from: u8, prev: u64, n: u32) -> Option<Step> {
+    // At most four targets: bounded work.
+    (from.saturating_add(1)..=4).find_map(|stage| {
+        let t = target(q, stage)?;
+        // OPEN (allowance below one increment): a target not deeper than the previous pass is
+        // dropped, so depths strictly increase and no zero cut is made.
+        (t > prev).then(|| step(n, t, q, stage))
+    })
+}
+
+/// G162.PQ, G162.SPLIT: the first pass — Q when Q ≤ P, else the first split target of P.
+pub fn first(sp: &SplitParams) -> Step {
+    let q = norm(sp);
+    if q.k >= 1 {
+        return step(1, q.q, &q, 0);
+    }
+    // D = P ≥ 1: the target D/2 rounds to at least 1 > 0.
+    split_after(&q, 0, 0, 1).unwrap_or(step(1, q.p, &q, 4))
+}
+
+/// G162.PQ, G162.SPLIT: the pass after `prev`, or `None` after the last (the pass at depth P).
+/// Full passes Q, 2Q, …, kQ; then, for D = P − kQ > 0, the targets kQ + D/2, kQ + 3D/4,
+/// kQ + 7D/8 and P, each rounded once half up, a target not deeper than the previous dropped.
+pub fn next(sp: &SplitParams, prev: &Step) -> Option<Step> {
+    let q = norm(sp);
+    let prev_depth = prev.depth.max(0).unsigned_abs();
+    if prev_depth >= q.p {
+        return None;
+    }
+    let n = prev.n.checked_add(1)?;
+    if prev.stage == 0 && u64::from(prev.n) < q.k {
+        // Full pass n at depth nQ ≤ kQ ≤ P.
+        return Some(step(n, u64::from(n).saturating_mul(q.q), &q, 0));
+    }
+    let from = if prev.stage == 0 { 0 } else { prev.stage };
+    split_after(&q, from, prev_depth, n)
+}
+
+/// PRJ.MAXPASS: the number of passes, or `None` when it exceeds `limit`. Closed form: the k
+/// full passes plus the split targets kept (at most four, found by stepping).
+pub fn pass_count(sp: &SplitParams, limit: u32) -> Option<u32> {
+    let q = norm(sp);
+    let mut count = q.k;
+    let mut prev = q.p - q.d; // kQ
+    for stage in 1..=4u8 {
+        if q.d == 0 {
+            break;
+        }
+        if let Some(t) = target(&q, stage) {
+            if t > prev {
+                count += 1;
+                prev = t;
+            }
+        }
+    }
+    u32::try_from(count).ok().filter(|&c| c <= limit)
+}
+
+/// The words of a G162 block, converted and range-checked (step 3), with the missing-word
+/// checks done (step 4). Positions are not yet resolved against the start point.
+#[derive(Clone, Copy, Debug)]
+pub struct Words {
+    /// X word as a diameter count (doubled when `x_radius` = 1); a distance under G91.
+    pub x: i64,
+    /// Z word; a distance under G91.
+    pub z: i64,
+    /// G91 was in force.
+    pub incremental: bool,
+    /// H, lead counts per minute.
+    pub h: i64,
+    /// P and Q, or `None` for a single pass.
+    pub split: Option<SplitParams>,
+    /// V, radius; 0 when omitted.
+    pub v: i64,
+    /// W (the taper) as a diameter count; 0 when omitted.
+    pub taper: i64,
+    /// A in half degrees, signed; 0 when omitted.
+    pub a: i64,
+    /// The lead of segment ②, lead counts (F, or the modal feed).
+    pub lead: i64,
+    /// B, 0.001°, 0…360 000.
+    pub b: u32,
+    /// I, lead counts, signed; 0 when omitted.
+    pub i: i64,
+    /// J, 0.001°; 360 000 when omitted.
+    pub j: u32,
+}
+
+/// The largest lead, lead counts (COM.RANGES of F).
+pub const fn max_lead(units: Units) -> i64 {
+    match units {
+        Units::Metric => 99_990_000,
+        Units::Inch => 999_000,
+    }
+}
+
+fn sat(v: i128) -> i64 {
+    i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
+}
+
+fn sign(v: i128) -> i64 {
+    sat(v.signum())
+}
+
+/// The variable lead of segment ② (G162.I, G162.J): (change, angle, floor), all 0 for a
+/// constant lead.
+fn variable_lead(w: &Words) -> (i64, u32, i64) {
+    // A shrinking lead that is already ≤ |I| never changes; I = 0 is a constant lead.
+    if w.i == 0 || (w.i < 0 && w.lead <= w.i.saturating_abs()) {
+        return (0, 0, 0);
+    }
+    let floor = if w.i < 0 { w.i.saturating_abs() } else { 0 };
+    (w.i, w.j, floor)
+}
+
+/// A G162 cycle being expanded: fixed geometry, the current pass and the step within it.
+#[derive(Clone, Copy, Debug)]
+pub struct Cycle {
+    /// S: the start point, where every pass returns.
+    start: (i64, i64),
+    /// X0: the depth-0 line at the thread start (diameter).
+    x0: i64,
+    /// Side s (±1): s = +1 cuts deeper toward −X.
+    s: i64,
+    /// Wd: the X change over segment ② (diameter).
+    wd: i64,
+    /// Ze: end Z including the leg; Ze1: end Z of segment ②.
+    ze: i64,
+    ze1: i64,
+    /// V, radius.
+    v: i64,
+    /// H, feed of segments ①, ③–⑤.
+    h: i64,
+    lead: i64,
+    angle: u32,
+    change: i64,
+    change_angle: u32,
+    floor: i64,
+    /// |A| in half degrees and σ = s·sign(A).
+    tan_index: u32,
+    sigma: i64,
+    /// The split, or `None` for a single pass.
+    split: Option<SplitParams>,
+    pass: Step,
+    header: Option<Pass>,
+    step: u8,
+}
+
+/// Moves of one pass: ① approach, ② thread, ③ leg, ④ retract X, ⑤ return Z.
+const STEPS: u8 = 5;
+
+impl Cycle {
+    /// G162.A: t(d) = σ·round(d·tan|A|).
+    fn shift(&self, depth: i64) -> i128 {
+        let t = mul_tan(depth.max(0).unsigned_abs(), self.tan_index);
+        i128::from(self.sigma) * i128::from(t)
+    }
+
+    fn header(&self) -> Pass {
+        Pass {
+            index: self.pass.n,
+            kind: PassKind::Rough,
+            diameter_depth: self.pass.depth.saturating_mul(2),
+            rule: self.pass.rule,
+        }
+    }
+
+    /// The move of `step` of the current pass (G162.PATH table).
+    fn move_at(&self, step: u8) -> Option<Move> {
+        let d = i128::from(self.pass.depth);
+        let t = self.shift(self.pass.depth);
+        let s = i128::from(self.s);
+        let bx = i128::from(self.x0) - 2 * s * d;
+        let ex = bx + i128::from(self.wd);
+        let lz = i128::from(self.ze) + t;
+        let feed = |x: i128, z: i128, rule: Rule| Move::feed(sat(x), sat(z), self.h, rule);
+        match step {
+            // ① feed H from S (or the previous pass's return point) to Bn.
+            0 => Some(feed(bx, i128::from(self.start.1) + t, Rule::G162Path)),
+            // ② the thread to En.
+            1 => Some(Move::variable_thread(
+                sat(ex),
+                sat(i128::from(self.ze1) + t),
+                self.lead,
+                self.angle,
+                self.change,
+                self.change_angle,
+                self.floor,
+                Rule::G162F,
+            )),
+            // ③ the 45° run-out leg: V outward on X (radius), V toward dz on Z.
+            2 => Some(feed(ex + 2 * s * i128::from(self.v), lz, Rule::G162V)),
+            // ④ retract X to S.x, opposite to the approach.
+            3 => Some(feed(i128::from(self.start.0), lz, Rule::G162Retract)),
+            // ⑤ return Z to S.
+            4 => Some(feed(i128::from(self.start.0), i128::from(self.start.1), Rule::G162Path)),
+            _ => None,
+        }
+    }
+
+    /// The next event, updating the machine position; `None` when the cycle is done. Bounded
+    /// work: at most [`STEPS`] skipped moves and one pass change per call.
+    pub fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
+        loop {
+            if let Some(h) = self.header.take() {
+                return Some(Event::Pass(h));
+            }
+            if self.step >= STEPS {
+                let split = self.split?;
+                self.pass = next(&split, &self.pass)?;
+                self.step = 0;
+                self.header = Some(self.header());
+                continue;
+            }
+            let mv = self.move_at(self.step);
+            self.step += 1;
+            if let Some(m) = mv {
+                // PRJ.NOOP: a move to the current position is not emitted.
+                if (m.x, m.z) != *pos {
+                    *pos = (m.x, m.z);
+                    return Some(Event::Move(m));
+                }
+            }
+        }
+    }
+}
+
+/// Step 5 of the check order for G162 (docs/INTERPRETATION.md, "Cycle checks"): Ze = S.z
+/// (G162.FORMAT), V against the thread length (G162.V), side and retract side (G162.RETRACT),
+/// pass bound (PRJ.MAXPASS), growing-pitch bound (G162.I); then the cycle.
+pub fn cycle(config: &Config, w: &Words, start: (i64, i64), line: u32) -> Result<Cycle, Alarm> {
+    let alarm = |code: AlarmCode, word: u8, rule: Rule| Alarm::new(code, Some(word), rule, line);
+    let (sx, sz) = (i128::from(start.0), i128::from(start.1));
+    // NC201.ABSINC: G91 values are distances from S.
+    let (x0, ze) = if w.incremental {
+        (sx + i128::from(w.x), sz + i128::from(w.z))
+    } else {
+        (i128::from(w.x), i128::from(w.z))
+    };
+    // 1. No thread length.
+    if ze == sz {
+        return Err(alarm(AlarmCode::Geometry, b'Z', Rule::G162Format));
+    }
+    // 2. The leg leaves no thread.
+    let length = (ze - sz).abs();
+    if i128::from(w.v) >= length {
+        return Err(alarm(AlarmCode::Geometry, b'V', Rule::G162V));
+    }
+    // 3. No approach direction.
+    let s = sign(sx - x0);
+    if s == 0 {
+        return Err(alarm(AlarmCode::Geometry, b'X', Rule::G162Retract));
+    }
+    // 4. The depth-0 path (its leg end) must lie on the approach side of S.
+    let si = i128::from(s);
+    let leg_end = x0 + i128::from(w.taper) + 2 * si * i128::from(w.v);
+    if si * (sx - leg_end) < 0 {
+        return Err(alarm(AlarmCode::Geometry, b'X', Rule::G162Retract));
+    }
+    // 5. The pass bound.
+    let pass = match &w.split {
+        Some(sp) => {
+            pass_count(sp, config.params.max_passes)
+                .ok_or(alarm(AlarmCode::TooManyPasses, b'Q', Rule::PrjMaxPass))?;
+            first(sp)
+        }
+        None => Step { n: 1, depth: 0, last: true, rule: Rule::G162X, stage: 0 },
+    };
+    let dz = sign(ze - sz);
+    let ze1 = ze - i128::from(dz) * i128::from(w.v);
+    // 6. A growing pitch must stay within the F range: J·F² + 360 000·I·s2 ≤ J·Fmax².
+    if w.i > 0 && !growing_lead_fits(config, w, ze1 - sz) {
+        return Err(alarm(AlarmCode::Geometry, b'I', Rule::G162I));
+    }
+    let (change, change_angle, floor) = variable_lead(w);
+    let mut c = Cycle {
+        start,
+        x0: sat(x0),
+        s,
+        wd: w.taper,
+        ze: sat(ze),
+        ze1: sat(ze1),
+        v: w.v,
+        h: w.h,
+        lead: w.lead,
+        // B = 360° is the zero mark itself.
+        angle: if w.b >= 360_000 { 0 } else { w.b },
+        change,
+        change_angle,
+        floor,
+        tan_index: u32::try_from(w.a.unsigned_abs()).unwrap_or(u32::MAX),
+        sigma: s * w.a.signum(),
+        split: w.split,
+        pass,
+        header: None,
+        step: 0,
+    };
+    c.header = Some(c.header());
+    Ok(c)
+}
+
+/// G162.I: the lead at the end of segment ② stays ≤ the F maximum. `dz2` is the Z travel of ②.
+/// s2 = twice the long-axis travel in lead counts (COM.LONGAXIS: Z long when 2|ΔZ| > |Wd|).
+fn growing_lead_fits(config: &Config, w: &Words, dz2: i128) -> bool {
+    let c = i128::from(config.grid.lead_counts_per_increment());
+    let (z2, xd) = (2 * dz2.abs(), i128::from(w.taper).abs());
+    let s2 = if z2 > xd { z2 * c } else { xd * c };
+    let (f, fmax, j) = (i128::from(w.lead), i128::from(max_lead(config.grid.units)), i128::from(w.j));
+    // j ≤ 10^9, f ≤ 10^8: j·f² ≤ 10^25; I ≤ 10^8 and s2 ≤ 2^66: the product stays below 2^127
+    // for any coordinates within i64 (saturating beyond, which only makes the check stricter).
+    let lhs = j.saturating_mul(f * f).saturating_add(360_000i128.saturating_mul(i128::from(w.i)).saturating_mul(s2));
+    lhs <= j.saturating_mul(fmax * fmax)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    extern crate std;
+    use std::vec::Vec;
+
+    fn depths(p: i64, q: i64) -> Vec<i64> {
+        let sp = SplitParams { depth: p, allowance: q };
+        let mut r = first(&sp);
+        let mut out = std::vec![r.depth];
+        while let Some(n) = next(&sp, &r) {
+            assert_eq!(n.n, r.n + 1);
+            out.push(n.depth);
+            r = n;
+        }
+        assert!(r.last);
+        assert_eq!(pass_count(&sp, u32::MAX), Some(u32::try_from(out.len()).unwrap()));
+        out
+    }
+
+    /// G162.SPLIT: P2.5 Q1 — the manual's 1, 2, 2.25, 2.375, 2.4375, 2.5 on the ISC grid
+    /// (0.0001 mm) and 2.438 in place of 2.4375 on ISB (2.4375 rounds half up).
+    #[test]
+    fn manual_split() {
+        assert_eq!(depths(25_000, 10_000), [10_000, 20_000, 22_500, 23_750, 24_375, 25_000]);
+        assert_eq!(depths(2_500, 1_000), [1_000, 2_000, 2_250, 2_375, 2_438, 2_500]);
+    }
+
+    /// The register's examples: D = 0 (no split), a remainder below one increment per cut,
+    /// Q > P, and the worked example P1.2 Q0.5.
+    #[test]
+    fn register_examples() {
+        assert_eq!(depths(3_000, 1_000), [1_000, 2_000, 3_000]);
+        assert_eq!(depths(3, 2), [2, 3]);
+        assert_eq!(depths(500, 1_000), [250, 375, 438, 500]);
+        assert_eq!(depths(1_200, 500), [500, 1_000, 1_100, 1_150, 1_175, 1_200]);
+        assert_eq!(depths(1, 1), [1]);
+        assert_eq!(depths(1, 5), [1]);
+        assert_eq!(depths(2, 5), [1, 2]);
+        let sp = SplitParams { depth: 999_999_999, allowance: 1 };
+        assert_eq!(pass_count(&sp, 10_000), None);
+        assert_eq!(pass_count(&sp, u32::MAX), Some(999_999_999));
+    }
+
+    /// Every P, Q ≤ 60: strictly increasing depths ending exactly at P, full cuts of Q first,
+    /// split cuts summing to the remainder, each split target within half an increment of its
+    /// exact value, and the pass count agreeing with the iteration.
+    #[test]
+    fn split_properties_small() {
+        for p in 1..=60i64 {
+            for q in 1..=60i64 {
+                let d = depths(p, q);
+                assert!(d.windows(2).all(|w| w[0] < w[1]), "{p} {q} {d:?}");
+                assert_eq!(d.last(), Some(&p));
+                let k = p / q;
+                for (i, &x) in d.iter().enumerate().take(usize::try_from(k).unwrap()) {
+                    assert_eq!(x, (i as i64 + 1) * q);
+                }
+                assert!(d.len() <= usize::try_from(k).unwrap() + 4);
+            }
+        }
+    }
+}

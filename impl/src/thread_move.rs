@@ -1,0 +1,109 @@
+//! The single thread moves G32 (constant lead), G33 (start angle P) and G34 (lead change K per
+//! revolution) of M003 (docs/INTERPRETATION.md, "G32, G33, G34 — thread moves").
+
+use crate::g162::max_lead;
+use cycle_vocab::{Alarm, AlarmCode, Grid, Move, Rule};
+
+/// Which thread move.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ThreadCode {
+    G32,
+    G33,
+    G34,
+}
+
+impl ThreadCode {
+    pub const fn rule(self) -> Rule {
+        match self {
+            ThreadCode::G32 => Rule::G32,
+            ThreadCode::G33 => Rule::G33,
+            ThreadCode::G34 => Rule::G34,
+        }
+    }
+}
+
+/// The largest G33 start angle P, 0.001°.
+pub const MAX_START_ANGLE: i64 = 359_999;
+
+/// The words of a thread move: the lead (lead counts), the G33 start angle `p` (0.001°, 0
+/// otherwise) and the G34 lead change `k` (lead counts per revolution, 0 otherwise).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ThreadWords {
+    pub lead: i64,
+    pub p: u32,
+    pub k: i64,
+}
+
+/// The thread move from `from` to `to` (X diameter). G34 lead bound (check step 5): with
+/// s2 twice the long-axis travel in lead counts, L² = F² + K·s2 must stay > 0 (K < 0) and
+/// ≤ Fmax² (K > 0), else `GEOMETRY` on K, rule G34.
+pub fn thread_move(
+    code: ThreadCode,
+    from: (i64, i64),
+    to: (i64, i64),
+    words: &ThreadWords,
+    grid: Grid,
+    line: u32,
+) -> Result<Move, Alarm> {
+    let ThreadWords { lead, p, k } = *words;
+    let rule = code.rule();
+    if code == ThreadCode::G34 && k != 0 {
+        let dx = (i128::from(to.0) - i128::from(from.0)).abs(); // diameter
+        let dz2 = 2 * (i128::from(to.1) - i128::from(from.1)).abs();
+        let c = i128::from(grid.lead_counts_per_increment());
+        // COM.LONGAXIS: Z long when |ΔZ| > |ΔX| as radius.
+        let s2 = if dz2 > dx { dz2 * c } else { dx * c };
+        let f = i128::from(lead);
+        let fmax = i128::from(max_lead(grid.units));
+        // |K| ≤ 10^8 and s2 < 2^67: no overflow; saturating for safety only.
+        let end2 = (f * f).saturating_add(i128::from(k).saturating_mul(s2));
+        if (k < 0 && end2 <= 0) || (k > 0 && end2 > fmax * fmax) {
+            return Err(Alarm::new(AlarmCode::Geometry, Some(b'K'), rule, line));
+        }
+        return Ok(Move::variable_thread(to.0, to.1, lead, 0, k, 360_000, 0, rule));
+    }
+    let angle = if code == ThreadCode::G33 { p } else { 0 };
+    Ok(Move::thread(to.0, to.1, lead, angle, rule))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const G: Grid = Grid::METRIC_ISB;
+
+    fn w(lead: i64, p: u32, k: i64) -> ThreadWords {
+        ThreadWords { lead, p, k }
+    }
+
+    #[test]
+    fn moves() {
+        let m = thread_move(ThreadCode::G32, (30_000, 5_000), (29_000, -35_000), &w(20_000, 0, 0), G, 1).unwrap();
+        assert_eq!(m, Move::thread(29_000, -35_000, 20_000, 0, Rule::G32));
+        // G33 P180000: the second start of a two-start thread.
+        let m = thread_move(ThreadCode::G33, (34_000, 5_000), (34_000, -26_000), &w(60_000, 180_000, 0), G, 1).unwrap();
+        assert_eq!(m.angle, 180_000);
+        assert_eq!(m.rule, Rule::G33);
+        // P is ignored outside G33; K = 0 is a constant lead.
+        let m = thread_move(ThreadCode::G34, (0, 0), (0, -1_000), &w(20_000, 0, 0), G, 1).unwrap();
+        assert_eq!(m, Move::thread(0, -1_000, 20_000, 0, Rule::G34));
+    }
+
+    /// G34: a 2 mm lead shrinking by 0.1 mm per revolution over Z travel s: L² = F² + K·2s.
+    /// F = 20 000, K = −1 000 counts: F² = 4·10^8, so 2s·1 000 < 4·10^8 needs s < 200 000
+    /// counts = 20 mm (ISB: 10 counts per increment), i.e. |ΔZ| < 20 000 increments.
+    #[test]
+    fn g34_bound() {
+        let ok = thread_move(ThreadCode::G34, (0, 0), (0, -19_999), &w(20_000, 0, -1_000), G, 4).unwrap();
+        assert_eq!(ok, Move::variable_thread(0, -19_999, 20_000, 0, -1_000, 360_000, 0, Rule::G34));
+        let bad = thread_move(ThreadCode::G34, (0, 0), (0, -20_000), &w(20_000, 0, -1_000), G, 4);
+        assert_eq!(bad, Err(Alarm::new(AlarmCode::Geometry, Some(b'K'), Rule::G34, 4)));
+        // X long (a face thread): s2 = |ΔX| (diameter) counts.
+        assert!(thread_move(ThreadCode::G34, (0, 0), (39_998, 0), &w(20_000, 0, -1_000), G, 4).is_ok());
+        assert!(thread_move(ThreadCode::G34, (0, 0), (40_000, 0), &w(20_000, 0, -1_000), G, 4).is_err());
+        // Growing past the F maximum 9999 mm.
+        let fmax = max_lead(G.units);
+        assert!(thread_move(ThreadCode::G34, (0, 0), (0, -1), &w(fmax, 0, 1), G, 4).is_err());
+        assert!(thread_move(ThreadCode::G34, (0, 0), (0, -1), &w(fmax - 1, 0, 1), G, 4).is_ok());
+    }
+}
