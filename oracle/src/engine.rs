@@ -5,10 +5,12 @@
 //! - [`ImplEngine`]: the production expander, `cycle_impl::Expander`, a streaming iterator
 //!   collected into a [`Trace`].
 //!
-//! A third engine — a vendor's expander run as a child process that reads the program and the
-//! configuration and prints the JSON trace (`Trace::from_json`) — fits the same trait
-//! (`CandidateEngine`); it is not built yet. Whatever goes wrong in such an engine (no output,
-//! bad JSON, a crash) would have to become a trace that cannot conform, never a pass.
+//! - [`crate::candidate::CandidateEngine`]: a vendor's expander run as a child process that
+//!   reads programs and configurations and answers JSON traces (`docs/CANDIDATE.md`).
+//!
+//! An engine that can fail outside the program — a child process that times out, crashes or
+//! answers garbage — says so through [`Engine::try_expand`] with a classified [`Failure`]; a
+//! campaign records it as that case's finding, never as a pass.
 
 use cycle_vocab::text::Trace;
 use cycle_vocab::Config;
@@ -19,6 +21,65 @@ pub trait Engine {
     fn name(&self) -> &str;
     /// The whole trace of `program` under `config`, ending at the first alarm.
     fn expand(&self, program: &[u8], config: &Config) -> Trace;
+
+    /// The trace, or why the engine could not produce one. In-process engines cannot fail this
+    /// way (the default); the candidate engine can (timeout, crash, garbage, …).
+    fn try_expand(&self, program: &[u8], config: &Config) -> Result<Trace, Failure> {
+        Ok(self.expand(program, config))
+    }
+}
+
+/// Why an engine produced no trace for a case.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum FailureKind {
+    /// The engine panicked (in-process engines promise not to).
+    Panic,
+    /// The candidate command could not be started.
+    Spawn,
+    /// No answer within the per-case timeout.
+    Timeout,
+    /// The candidate exited (or closed its output) before answering.
+    Crash,
+    /// The answer is not a protocol response: not JSON, wrong id, not a trace.
+    Garbage,
+    /// The answer exceeded the output cap.
+    OutputTooLarge,
+    /// The candidate answered with an error instead of a trace.
+    Refused,
+}
+
+impl FailureKind {
+    /// A short name for reports: `timeout`, `output too large`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            FailureKind::Panic => "panic",
+            FailureKind::Spawn => "spawn failed",
+            FailureKind::Timeout => "timeout",
+            FailureKind::Crash => "crash",
+            FailureKind::Garbage => "garbage output",
+            FailureKind::OutputTooLarge => "output too large",
+            FailureKind::Refused => "refused",
+        }
+    }
+}
+
+impl std::fmt::Display for FailureKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// A classified engine failure and what was seen (exit status, a snippet of the output, …).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Failure {
+    pub kind: FailureKind,
+    pub message: String,
+}
+
+impl std::fmt::Display for Failure {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}: {}", self.kind, self.message)
+    }
 }
 
 /// The executable reference spec (`cycle-spec`).

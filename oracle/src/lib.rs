@@ -14,7 +14,9 @@
 #![forbid(unsafe_code)]
 
 pub mod campaign;
+pub mod candidate;
 pub mod catalogue;
+pub mod certify;
 pub mod conformance;
 pub mod corpus;
 pub mod engine;

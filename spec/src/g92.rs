@@ -2,7 +2,8 @@
 //!
 //! One cycle from the start point A: ① rapid X to the thread start C, ② thread C → D (with the
 //! pull-out), ③ rapid X back to A.x, ④ rapid Z back to A.z (G92.PATH). The modal run
-//! (G92.MODAL) is handled by [`crate::program`]; this module expands one cycle.
+//! (G92.MODAL) is handled by [`crate::program`]; this module expands one cycle. The manual's
+//! example (G92.EXAMPLE, `corpus/g92_example.nc`: one run of four cycles) is expanded here.
 
 use crate::emit::{start_angle, Out};
 use crate::exact::round_div;
@@ -17,7 +18,8 @@ pub struct G92Cycle {
     pub a: (i128, i128),
     /// Thread end D (X diameter, Z).
     pub d: (i128, i128),
-    /// R: thread start X − thread end X, radius increments.
+    /// R: thread start X − thread end X, radius increments (COM.AXES: X is a diameter, so R
+    /// enters X doubled).
     pub r: i128,
     /// The lead, lead counts.
     pub lead: i64,
@@ -73,8 +75,8 @@ pub fn resolve_jk(j: Option<i64>, k: Option<i64>, c: i128) -> Option<(Amounts, R
         (None, None) => (Amounts { j: c, k: c }, Rule::G92Jk1),
         (None, Some(0)) => (Amounts { j: c, k: c }, Rule::G92Jk2),
         (None, Some(k)) => (Amounts { j: c, k }, Rule::G92Jk2),
-        (Some(0), None) | (Some(0), Some(0)) => return None, // JK.4
-        (Some(0), Some(_)) => return None,                   // JK.6
+        (Some(0), None) | (Some(0), Some(0)) => return None, // G92.JK.4
+        (Some(0), Some(_)) => return None,                   // G92.JK.6
         (Some(j), None) => (Amounts { j, k: j }, Rule::G92Jk3),
         (Some(j), Some(0)) => (Amounts { j, k: j }, Rule::G92Jk5),
         (Some(j), Some(k)) => (Amounts { j, k }, Rule::G92Pullout),

@@ -1,13 +1,18 @@
-//! `cyclecheck`: expand a program with either engine, diff the engines on one program, or run
-//! the built-in corpus through both. See the README ("The CLI") for the promised behaviour.
+//! `cyclecheck`: expand a program with either engine, diff the spec against the production
+//! expander or a candidate on programs, run the built-in corpus through both, or write the
+//! certification evidence bundle (`certify`). See the README ("The CLI") for the promised
+//! behaviour.
 //!
-//! Exit codes: 0 success / the engines conform; 1 the engines diverge (`diff`, `corpus`);
-//! 2 an alarm or bad input — the alarm, naming its code, word, rule and line, goes to stderr.
+//! Exit codes: 0 success / the engines conform; 1 the engines diverge or the candidate fails
+//! (`diff`, `corpus`, `certify`); 2 an alarm or bad input — the alarm, naming its code, word,
+//! rule and line, goes to stderr.
 
 use cycle_oracle::campaign::{self, Verdict};
+use cycle_oracle::candidate::Limits;
+use cycle_oracle::certify::{self, CaseResult};
 use cycle_oracle::conformance::{self, alarm_summary};
 use cycle_oracle::corpus;
-use cycle_oracle::engine::{self, ImplEngine, SpecEngine};
+use cycle_oracle::engine::{self, FailureKind, ImplEngine, SpecEngine};
 use cycle_vocab::params::MAX_LENGTH;
 use cycle_vocab::text::Trace;
 use cycle_vocab::{Config, Dialect, Grid, Increment, Units};
@@ -16,7 +21,10 @@ use std::process::ExitCode;
 const USAGE: &str = "\
 usage:
   cyclecheck expand FILE [--engine spec|impl] [--format gcode|json] [OPTIONS]
-  cyclecheck diff FILE [--format gcode|json] [OPTIONS]      spec vs impl
+  cyclecheck diff FILE... [--candidate CMD] [--format gcode|json] [OPTIONS]
+                                                            spec vs impl, or vs a candidate
+  cyclecheck certify [--out DIR] [--candidate CMD] [--cycles LIST] [--cases N] [--seed S]
+                                                            the certification evidence bundle
   cyclecheck corpus [--format text|json]                    every built-in example, spec vs impl
   cyclecheck gate [--cases N] [--seed S] [--no-cargo-test]  pre-merge gate
   cyclecheck fuzz [--budget SECS] [--targets T,..] [--out DIR] [--features F] [--write-seeds]
@@ -27,7 +35,17 @@ options:
   --increment isb|isc       least increment (default isb)
   --param N=V               machine parameter: 19, 107, 18, 5130, 5131, 5140..5145, max_passes
   --start-x X --start-z Z   machine position at program start, mm or inch (default 0 0)
-exit: 0 ok / conform, 1 the engines diverge, 2 an alarm or bad input";
+candidate options (diff, certify; docs/CANDIDATE.md):
+  --candidate CMD           an external expander speaking cyclecheck-candidate/1; CMD is split
+                            like a shell command line (quotes, backslashes) and run without a shell
+  --timeout-ms MS           time allowed per case (default 10000)
+  --max-output BYTES        longest answer line per case (default 67108864)
+certify options:
+  --out DIR                 where the bundle goes (default evidence)
+  --cycles LIST             all (default) or a comma list of g92, g76, g78, f76
+  --cases N                 generated cases per family (default 500; garbage gets a fifth)
+  --seed S                  seed of the generated campaign (default 6912920065418837504)
+exit: 0 ok / conform, 1 the engines diverge or the candidate fails, 2 an alarm or bad input";
 
 /// `writeln!` into the output buffer (a `String` cannot fail).
 macro_rules! outln {
@@ -61,13 +79,27 @@ fn bad<T>(msg: impl Into<String>) -> Result<T, Bad> {
 }
 
 /// The options of `expand` and `diff`; each takes a value.
-const OPTIONS: &[&str] =
-    &["--engine", "--format", "--dialect", "--units", "--increment", "--param", "--start-x", "--start-z"];
+const OPTIONS: &[&str] = &[
+    "--engine",
+    "--format",
+    "--dialect",
+    "--units",
+    "--increment",
+    "--param",
+    "--start-x",
+    "--start-z",
+    "--candidate",
+    "--timeout-ms",
+    "--max-output",
+];
 
 /// The parsed command line of `expand` and `diff`.
 struct Options {
-    file: Option<String>,
+    files: Vec<String>,
     engine: Option<String>,
+    /// `diff --candidate`: the candidate command and its limits.
+    candidate: Option<String>,
+    limits: Limits,
     format: Option<String>,
     config: Config,
     start: (Option<String>, Option<String>),
@@ -97,6 +129,7 @@ fn run(args: &[String]) -> Result<u8, Bad> {
         "expand" => expand(parse(rest, true)?),
         "diff" => diff(parse(rest, false)?),
         "corpus" => corpus_command(rest),
+        "certify" => certify_command(rest),
         "gate" => cycle_oracle::gate::command(rest).map_err(Bad),
         "fuzz" => cycle_oracle::nightly::command(rest).map_err(Bad),
         other => bad(format!("unknown command {other:?}\n{USAGE}")),
@@ -115,15 +148,24 @@ fn option_value<'a>(arg: &'a str, it: &mut impl Iterator<Item = &'a String>) -> 
 }
 
 fn parse(args: &[String], allow_engine: bool) -> Result<Options, Bad> {
-    let mut o = Options { file: None, engine: None, format: None, config: Config::default(), start: (None, None) };
+    let mut o = Options {
+        files: Vec::new(),
+        engine: None,
+        candidate: None,
+        limits: Limits::default(),
+        format: None,
+        config: Config::default(),
+        start: (None, None),
+    };
     let mut units = Units::Metric;
     let mut increment = Increment::Isb;
     let mut it = args.iter();
     while let Some(arg) = it.next() {
         if !arg.starts_with("--") {
-            if o.file.replace(arg.clone()).is_some() {
-                return bad(format!("one FILE only (also got {arg:?})"));
+            if allow_engine && !o.files.is_empty() {
+                return bad(format!("expand takes one FILE (also got {arg:?})"));
             }
+            o.files.push(arg.clone());
             continue;
         }
         let name = arg.split_once('=').map_or(arg.as_str(), |(n, _)| n);
@@ -178,6 +220,11 @@ fn parse(args: &[String], allow_engine: bool) -> Result<Options, Bad> {
             }
             "--start-x" => o.start.0 = Some(value.to_string()),
             "--start-z" => o.start.1 = Some(value.to_string()),
+            "--candidate" | "--timeout-ms" | "--max-output" if allow_engine => {
+                return bad(format!("{name} is an option of diff and certify; expand takes --engine spec|impl"))
+            }
+            "--candidate" => o.candidate = Some(value.to_string()),
+            "--timeout-ms" | "--max-output" => candidate_limit(&mut o.limits, name, value)?,
             _ => return bad(format!("unknown option {name:?}\n{USAGE}")),
         }
     }
@@ -224,15 +271,27 @@ fn grid_value(text: &str, decimals: u32) -> Result<i64, String> {
     Ok(if negative { -count } else { count })
 }
 
-fn read_program(o: &Options) -> Result<Vec<u8>, Bad> {
-    let Some(file) = &o.file else {
-        return bad(format!("no FILE given\n{USAGE}"));
+/// `--timeout-ms MS` or `--max-output BYTES` (both at least 1).
+fn candidate_limit(limits: &mut Limits, name: &str, value: &str) -> Result<(), Bad> {
+    let Some(n) = value.trim().parse::<u64>().ok().filter(|&n| n >= 1) else {
+        return bad(format!("{name} takes a whole number of at least 1, not {value:?}"));
     };
+    match name {
+        "--timeout-ms" => limits.timeout = std::time::Duration::from_millis(n),
+        _ => limits.max_output = usize::try_from(n).unwrap_or(usize::MAX),
+    }
+    Ok(())
+}
+
+fn read_program(file: &str) -> Result<Vec<u8>, Bad> {
     std::fs::read(file).map_err(|e| Bad(format!("cannot read {file}: {e}")))
 }
 
 fn expand(o: Options) -> Result<u8, Bad> {
-    let program = read_program(&o)?;
+    let Some(file) = o.files.first() else {
+        return bad(format!("no FILE given\n{USAGE}"));
+    };
+    let program = read_program(file)?;
     let name = o.engine.as_deref().unwrap_or("spec");
     let engine = engine::by_name(name).expect("engine names are checked when parsing");
     let trace = engine.expand(&program, &o.config);
@@ -257,47 +316,164 @@ fn report_alarm(trace: &Trace) -> u8 {
 }
 
 fn diff(o: Options) -> Result<u8, Bad> {
-    let program = read_program(&o)?;
-    let (spec, imp) = (SpecEngine, ImplEngine::default());
-    let (reference, verdict) = campaign::judge((&spec, &imp), &program, &o.config);
+    if o.files.is_empty() {
+        return bad(format!("no FILE given\n{USAGE}"));
+    }
+    let programs = o.files.iter().map(|f| read_program(f).map(|p| (f, p))).collect::<Result<Vec<_>, Bad>>()?;
+    let certify_options = certify::Options { candidate: o.candidate.clone(), limits: o.limits, ..certify::Options::default() };
+    let candidate = certify::candidate_engine(&certify_options).map_err(|e| Bad(e.0))?;
     let json = o.format.as_deref() == Some("json");
-    let mut out = String::new();
-    let code = match verdict {
-        Verdict::Diverge(d) => {
-            if json {
-                outln!(out, "{}", serde_json::json!({"conform": false, "divergence": conformance::to_json(&d)}));
-            } else {
-                outln!(out, "{d}");
-            }
-            1
+    let several = programs.len() > 1;
+    let (mut diverged, mut alarmed) = (false, false);
+    for (file, program) in &programs {
+        let mut out = String::new();
+        if several && !json {
+            outln!(out, "== {file}");
         }
-        Verdict::Panic { engine, message } => {
-            if json {
-                outln!(out, "{}", serde_json::json!({"conform": false, "panic": {"engine": engine, "message": message}}));
-            } else {
-                outln!(out, "PANIC in the {engine} engine: {message}");
+        let (reference, _, result) = certify::judge(&SpecEngine, candidate.as_ref(), program, &o.config);
+        let mut doc = match &result {
+            CaseResult::Diverge(d) => {
+                diverged = true;
+                if !json {
+                    outln!(out, "{d}");
+                }
+                serde_json::json!({"conform": false, "divergence": conformance::to_json(d)})
             }
-            1
-        }
-        Verdict::Conform(_) => {
-            let trace = reference.expect("a conforming case has a reference trace");
-            if json {
-                outln!(out, "{}", serde_json::json!({"conform": true, "events": trace.events.len(), "alarm": trace.alarm}));
-            } else {
-                match &trace.alarm {
-                    None => outln!(out, "conform: {} events", trace.events.len()),
-                    Some(a) => {
-                        outln!(out, "conform: {} events, then {}", trace.events.len(), Trace::alarm_line(a))
+            CaseResult::Failure { engine, failure } => {
+                diverged = true;
+                if failure.kind == FailureKind::Panic {
+                    if !json {
+                        outln!(out, "PANIC in the {engine} engine: {}", failure.message);
                     }
+                    serde_json::json!({"conform": false, "panic": {"engine": engine, "message": failure.message}})
+                } else {
+                    if !json {
+                        outln!(out, "FAILURE of the {engine} engine ({}): {}", failure.kind, failure.message);
+                    }
+                    serde_json::json!({"conform": false, "failure": {"engine": engine, "kind": failure.kind.name(), "message": failure.message}})
                 }
             }
-            emit(&out);
-            out.clear();
-            report_alarm(&trace)
+            CaseResult::Conform => {
+                let trace = reference.as_ref().expect("a conforming case has a reference trace");
+                if !json {
+                    match &trace.alarm {
+                        None => outln!(out, "conform: {} events", trace.events.len()),
+                        Some(a) => outln!(out, "conform: {} events, then {}", trace.events.len(), Trace::alarm_line(a)),
+                    }
+                }
+                serde_json::json!({"conform": true, "events": trace.events.len(), "alarm": trace.alarm})
+            }
+        };
+        if json {
+            if several {
+                doc["file"] = serde_json::json!(file);
+            }
+            outln!(out, "{doc}");
         }
-    };
+        emit(&out);
+        if let (CaseResult::Conform, Some(trace)) = (&result, &reference) {
+            alarmed |= report_alarm(trace) != 0;
+        }
+    }
+    Ok(if diverged {
+        1
+    } else if alarmed {
+        2
+    } else {
+        0
+    })
+}
+
+/// `certify`: runs the certification with a progress bar on stderr, writes the bundle, prints
+/// the summary; exit 0 when every case conforms, 1 otherwise, 2 on bad options or a failed write.
+fn certify_command(args: &[String]) -> Result<u8, Bad> {
+    let mut options = certify::Options::default();
+    let mut out_dir = std::path::PathBuf::from("evidence");
+    let mut it = args.iter();
+    while let Some(arg) = it.next() {
+        if !arg.starts_with("--") {
+            return bad(format!("certify takes options only, not {arg:?}\n{USAGE}"));
+        }
+        let (name, value) = option_value(arg, &mut it)?;
+        match name {
+            "--out" => out_dir = value.into(),
+            "--candidate" => options.candidate = Some(value.to_string()),
+            "--timeout-ms" | "--max-output" => candidate_limit(&mut options.limits, name, value)?,
+            "--cycles" => options.cycles = certify::Options::parse_cycles(value).map_err(Bad)?,
+            "--cases" => {
+                options.cases = value.trim().parse().map_err(|_| Bad(format!("--cases takes a whole number, not {value:?}")))?
+            }
+            "--seed" => options.seed = value.trim().parse().map_err(|_| Bad(format!("--seed takes a u64, not {value:?}")))?,
+            _ => return bad(format!("unknown certify option {name:?}\n{USAGE}")),
+        }
+    }
+    let mut bar = ProgressBar::new();
+    let run = certify::run(&options, &mut |p| bar.show(p)).map_err(|e| Bad(e.0))?;
+    bar.finish();
+    let files = certify::bundle::files(&run);
+    certify::bundle::write(&out_dir, &files).map_err(|e| Bad(format!("cannot write {}: {e}", out_dir.display())))?;
+    let plots = files.iter().filter(|(f, _)| f.starts_with("plots/")).count();
+    let mut out = run.summary();
+    outln!(
+        out,
+        "\nwrote {}: index.html, evidence.json, {plots} plots — {}",
+        out_dir.display(),
+        if run.passed() { "PASS" } else { "FAIL" }
+    );
     emit(&out);
-    Ok(code)
+    Ok(if run.passed() { 0 } else { 1 })
+}
+
+/// A progress bar on stderr: redrawn in place on a terminal, a line per phase otherwise.
+struct ProgressBar {
+    tty: bool,
+    phase: String,
+    last: Option<std::time::Instant>,
+}
+
+impl ProgressBar {
+    fn new() -> ProgressBar {
+        use std::io::IsTerminal as _;
+        ProgressBar { tty: std::io::stderr().is_terminal(), phase: String::new(), last: None }
+    }
+
+    fn show(&mut self, p: certify::Progress) {
+        let new_phase = self.phase != p.phase;
+        if !self.tty {
+            if new_phase {
+                eprintln!("certify: {} ({} of {} cases done, {} not conforming)", p.phase, p.done, p.total, p.bad);
+                self.phase = p.phase.to_string();
+            }
+            return;
+        }
+        let now = std::time::Instant::now();
+        let due = self.last.is_none_or(|t| now.duration_since(t).as_millis() >= 100);
+        if !(due || new_phase || p.done == p.total) {
+            return;
+        }
+        if new_phase && !self.phase.is_empty() {
+            eprintln!();
+        }
+        self.phase = p.phase.to_string();
+        self.last = Some(now);
+        const WIDTH: usize = 30;
+        let filled = (p.done * WIDTH).checked_div(p.total).unwrap_or(WIDTH);
+        eprint!(
+            "\r{:<10} [{}{}] {:>6}/{:<6} {} not conforming ",
+            p.phase,
+            "#".repeat(filled),
+            "-".repeat(WIDTH - filled),
+            p.done,
+            p.total,
+            p.bad
+        );
+    }
+
+    fn finish(&mut self) {
+        if self.tty && !self.phase.is_empty() {
+            eprintln!();
+        }
+    }
 }
 
 fn corpus_command(args: &[String]) -> Result<u8, Bad> {

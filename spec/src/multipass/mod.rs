@@ -5,6 +5,10 @@
 //! code; the second describes one thread: X(U) Z(W) R(i) P(k) Q(Δd) J K F(I). The cycle cuts
 //! the rough passes of [`schedule`], then m finishing passes at depth k, each from its infeed
 //! point Bn ([`infeed`]) with the pull-out of [`crate::pullout`].
+//!
+//! The manuals' examples run through this module: G76.EXAMPLE (`corpus/g76_example.nc`),
+//! F76.EX1 and F76.EX2 (`corpus/f76_ex*.nc`), and G78.EXAMPLE (`corpus/g78_example.nc`), whose
+//! printed infeed mode 05 [`check_p_digits`] refuses (G78.MODE).
 
 pub mod infeed;
 pub mod schedule;

@@ -1,0 +1,338 @@
+//! SVG toolpath plots: Z across, X up — X as a **radius** (the diameter of the trace halved), in
+//! mm (inch); the two axes are scaled independently so that thread depths stay visible.
+//!
+//! Rapids are dashed grey, feeds solid grey, thread moves coloured by the kind of their pass
+//! (rough, finish, spring), pull-outs (moves tagged with a pull-out rule) orange, the infeed
+//! point of each pass (where its first thread move starts) a dot. When the candidate's trace
+//! differs, each candidate move that differs from the reference at its index is drawn red and
+//! thick, and the first divergence is labelled.
+//!
+//! The view is zoomed to the cycles: it spans the moves from the first pass header on (and every
+//! divergent move); positioning moves before the first pass are clipped at its edge.
+
+use super::markdown::escape;
+use cycle_vocab::text::{fixed, Trace};
+use cycle_vocab::{Config, Event, Move, MoveKind, PassKind, Rule};
+use std::fmt::Write as _;
+
+const WIDTH: f64 = 960.0;
+const HEIGHT: f64 = 440.0;
+const LEFT: f64 = 70.0;
+const RIGHT: f64 = 20.0;
+const TOP: f64 = 66.0;
+const BOTTOM: f64 = 45.0;
+
+const RAPID: &str = "#8c8c8c";
+const FEED: &str = "#555555";
+const ROUGH: &str = "#1f77b4";
+const FINISH: &str = "#2ca02c";
+const SPRING: &str = "#9467bd";
+const PULLOUT: &str = "#ff7f0e";
+const DIVERGENT: &str = "#d62728";
+
+/// Whether a move realises a pull-out (its rule tag).
+fn is_pullout(rule: Rule) -> bool {
+    matches!(
+        rule,
+        Rule::G92Pullout
+            | Rule::G92Jk1
+            | Rule::G92Jk2
+            | Rule::G92Jk3
+            | Rule::G92Jk4
+            | Rule::G92Jk5
+            | Rule::G92Jk6
+            | Rule::G92Jk7
+            | Rule::G76Pullout
+            | Rule::G78Pullout
+    )
+}
+
+fn pass_colour(kind: Option<PassKind>) -> &'static str {
+    match kind {
+        Some(PassKind::Rough) => ROUGH,
+        Some(PassKind::Finish) => FINISH,
+        Some(PassKind::Spring) => SPRING,
+        None => FEED,
+    }
+}
+
+/// A segment of a trace: from, to (X diameter, Z, increments), the move, and its pass kind.
+struct Segment {
+    index: usize,
+    from: (i64, i64),
+    to: (i64, i64),
+    m: Move,
+    pass: Option<PassKind>,
+    first_thread_of_pass: bool,
+}
+
+fn segments(trace: &Trace, start: (i64, i64)) -> Vec<Segment> {
+    let mut out = Vec::new();
+    let mut at = start;
+    let mut pass = None;
+    let mut pass_has_thread = true;
+    for (index, e) in trace.events.iter().enumerate() {
+        match e {
+            Event::Pass(p) => {
+                pass = Some(p.kind);
+                pass_has_thread = false;
+            }
+            Event::Move(m) => {
+                let first = m.kind == MoveKind::Thread && !pass_has_thread;
+                if m.kind == MoveKind::Thread {
+                    pass_has_thread = true;
+                }
+                out.push(Segment { index, from: at, to: (m.x, m.z), m: *m, pass, first_thread_of_pass: first });
+                at = (m.x, m.z);
+            }
+        }
+    }
+    out
+}
+
+/// Whether the candidate's event at `index` differs from the reference's (fields compared as the
+/// conformance relation does: everything but the rule tag).
+fn differs(reference: &Trace, candidate: &Trace, index: usize) -> bool {
+    match (reference.events.get(index), candidate.events.get(index)) {
+        (Some(Event::Move(r)), Some(Event::Move(c))) => {
+            (r.kind, r.x, r.z, r.feed, r.angle, r.lead_change, r.lead_change_angle, r.lead_floor)
+                != (c.kind, c.x, c.z, c.feed, c.angle, c.lead_change, c.lead_change_angle, c.lead_floor)
+        }
+        (Some(Event::Pass(r)), Some(Event::Pass(c))) => (r.index, r.kind, r.diameter_depth) != (c.index, c.kind, c.diameter_depth),
+        (None, None) => false,
+        _ => true,
+    }
+}
+
+/// A clip-path id unique per plot (several plots share one page).
+fn clip_id(title: &str) -> String {
+    let safe: String = title.chars().map(|c| if c.is_ascii_alphanumeric() { c } else { '_' }).collect();
+    format!("view_{safe}")
+}
+
+/// Tick positions: about eight round values covering lo…hi.
+fn ticks(lo: f64, hi: f64) -> Vec<f64> {
+    let span = (hi - lo).max(1e-9);
+    let raw = span / 8.0;
+    let mag = 10f64.powf(raw.log10().floor());
+    let step = [1.0, 2.0, 2.5, 5.0, 10.0].iter().map(|m| m * mag).find(|s| *s >= raw).unwrap_or(10.0 * mag);
+    let mut v = (lo / step).ceil() * step;
+    let mut out = Vec::new();
+    while v <= hi + step * 1e-6 && out.len() < 20 {
+        out.push(if v.abs() < step * 1e-9 { 0.0 } else { v });
+        v += step;
+    }
+    out
+}
+
+/// The plot of `reference` (and where it differs, `candidate`) for a program run under
+/// `config`; `divergence`: the first divergent event and its rule, for the label.
+pub fn svg(title: &str, config: &Config, reference: &Trace, candidate: Option<&Trace>, divergence: Option<(usize, Option<Rule>)>) -> String {
+    let start = (config.start_x, config.start_z);
+    let refs = segments(reference, start);
+    let cands: Vec<Segment> = match candidate {
+        Some(c) => segments(c, start).into_iter().filter(|s| differs(reference, c, s.index)).collect(),
+        None => Vec::new(),
+    };
+    let scale = 10f64.powi(reference.grid.decimals() as i32);
+    let radius = |x: i64| x as f64 / 2.0 / scale;
+    let axial = |z: i64| z as f64 / scale;
+    // Bounds: the cycles (from the first pass header on; everything when there is none) and the
+    // divergent moves.
+    let first_pass = reference.events.iter().position(|e| matches!(e, Event::Pass(_)));
+    let in_view: Vec<&Segment> = refs.iter().filter(|s| first_pass.is_none_or(|p| s.index > p)).collect();
+    let mut points: Vec<(i64, i64)> = Vec::new();
+    match in_view.first() {
+        Some(first) => points.push(first.from),
+        None => points.push(start),
+    }
+    points.extend(in_view.iter().map(|s| s.to));
+    points.extend(cands.iter().flat_map(|s| [s.from, s.to]));
+    let (mut z0, mut z1, mut r0, mut r1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for &(x, z) in &points {
+        z0 = z0.min(axial(z));
+        z1 = z1.max(axial(z));
+        r0 = r0.min(radius(x));
+        r1 = r1.max(radius(x));
+    }
+    let pad = |lo: f64, hi: f64| {
+        let p = ((hi - lo) * 0.05).max(0.5 / scale.sqrt());
+        (lo - p, hi + p)
+    };
+    let (z0, z1) = pad(z0, z1);
+    let (r0, r1) = pad(r0, r1);
+    let (pw, ph) = (WIDTH - LEFT - RIGHT, HEIGHT - TOP - BOTTOM);
+    let px = |z: i64| LEFT + (axial(z) - z0) / (z1 - z0) * pw;
+    let py = |x: i64| TOP + ph - (radius(x) - r0) / (r1 - r0) * ph;
+    let unit = reference.grid.unit_name().to_lowercase();
+
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {WIDTH} {HEIGHT}" width="{WIDTH}" height="{HEIGHT}" font-family="sans-serif" font-size="12" role="img" aria-label="toolpath of {t}">"#,
+        t = escape(title)
+    );
+    let _ = writeln!(s, r#"<rect width="{WIDTH}" height="{HEIGHT}" fill="white"/>"#);
+    let _ = writeln!(s, r#"<text x="{LEFT}" y="18" font-size="14" font-weight="bold">{}</text>"#, escape(title));
+    let _ = writeln!(
+        s,
+        r##"<text x="{LEFT}" y="34" fill="#444">Z ({unit}) across, X as radius ({unit}) up; axes scaled independently{clip}</text>"##,
+        clip = if first_pass.is_some_and(|p| p > 0) { "; positioning before the first pass clipped" } else { "" }
+    );
+    let _ = writeln!(
+        s,
+        r#"<defs><clipPath id="{id}"><rect x="{LEFT}" y="{TOP}" width="{pw}" height="{ph}"/></clipPath></defs>"#,
+        id = clip_id(title)
+    );
+    // Axes and ticks.
+    let _ = writeln!(s, r##"<rect x="{LEFT}" y="{TOP}" width="{pw}" height="{ph}" fill="none" stroke="#ccc"/>"##);
+    for z in ticks(z0, z1) {
+        let x = LEFT + (z - z0) / (z1 - z0) * pw;
+        let _ = writeln!(
+            s,
+            r##"<line x1="{x:.1}" y1="{TOP}" x2="{x:.1}" y2="{b:.1}" stroke="#eee"/><text x="{x:.1}" y="{ty:.1}" text-anchor="middle" fill="#444">{z}</text>"##,
+            b = TOP + ph,
+            ty = TOP + ph + 16.0
+        );
+    }
+    for r in ticks(r0, r1) {
+        let y = TOP + ph - (r - r0) / (r1 - r0) * ph;
+        let _ = writeln!(
+            s,
+            r##"<line x1="{LEFT}" y1="{y:.1}" x2="{e:.1}" y2="{y:.1}" stroke="#eee"/><text x="{tx:.1}" y="{ty:.1}" text-anchor="end" fill="#444">{r}</text>"##,
+            e = LEFT + pw,
+            tx = LEFT - 6.0,
+            ty = y + 4.0
+        );
+    }
+    let _ = writeln!(s, r##"<text x="{x:.1}" y="{y:.1}" text-anchor="middle" fill="#444">Z</text>"##, x = LEFT + pw / 2.0, y = HEIGHT - 6.0);
+    let _ = writeln!(s, r##"<text x="14" y="{y:.1}" fill="#444">X</text>"##, y = TOP + ph / 2.0);
+
+    // The reference path, clipped to the view.
+    let _ = writeln!(s, r#"<g clip-path="url(#{})">"#, clip_id(title));
+    for seg in &refs {
+        let (x1, y1, x2, y2) = (px(seg.from.1), py(seg.from.0), px(seg.to.1), py(seg.to.0));
+        let (colour, extra, class) = match seg.m.kind {
+            MoveKind::Rapid => (RAPID, r#" stroke-dasharray="5 4""#, "rapid"),
+            MoveKind::Feed => (FEED, "", "feed"),
+            MoveKind::Thread if is_pullout(seg.m.rule) => (PULLOUT, "", "pullout"),
+            MoveKind::Thread => (pass_colour(seg.pass), "", "thread"),
+        };
+        let _ = writeln!(
+            s,
+            r#"<line class="{class}" x1="{x1:.2}" y1="{y1:.2}" x2="{x2:.2}" y2="{y2:.2}" stroke="{colour}" stroke-width="1.4"{extra}><title>event {} {}</title></line>"#,
+            seg.index,
+            escape(&Trace::event_line(reference.grid, &Event::Move(seg.m)))
+        );
+    }
+    for seg in refs.iter().filter(|s| s.first_thread_of_pass) {
+        let _ = writeln!(
+            s,
+            r#"<circle class="infeed" cx="{:.2}" cy="{:.2}" r="3" fill="{}"><title>infeed point before event {}: X{} Z{}</title></circle>"#,
+            px(seg.from.1),
+            py(seg.from.0),
+            pass_colour(seg.pass),
+            seg.index,
+            fixed(seg.from.0, reference.grid.decimals()),
+            fixed(seg.from.1, reference.grid.decimals())
+        );
+    }
+    // The candidate's divergent moves.
+    for seg in &cands {
+        let _ = writeln!(
+            s,
+            r#"<line class="divergent" x1="{:.2}" y1="{:.2}" x2="{:.2}" y2="{:.2}" stroke="{DIVERGENT}" stroke-width="3.5" stroke-linecap="round"><title>candidate event {}: {}</title></line>"#,
+            px(seg.from.1),
+            py(seg.from.0),
+            px(seg.to.1),
+            py(seg.to.0),
+            seg.index,
+            escape(&Trace::event_line(reference.grid, &Event::Move(seg.m)))
+        );
+    }
+    s.push_str("</g>\n");
+    if let Some((index, rule)) = divergence {
+        let rule = rule.map(|r| format!(", rule {r}")).unwrap_or_default();
+        let _ = writeln!(
+            s,
+            r#"<text x="{x:.1}" y="18" text-anchor="end" fill="{DIVERGENT}" font-weight="bold">first divergence: event {index}{rule}</text>"#,
+            x = WIDTH - RIGHT
+        );
+    }
+    legend(&mut s, !cands.is_empty());
+    s.push_str("</svg>\n");
+    s
+}
+
+fn legend(s: &mut String, divergent: bool) {
+    let mut items: Vec<(&str, &str, &str)> = vec![
+        ("rapid", RAPID, r#" stroke-dasharray="5 4""#),
+        ("rough", ROUGH, ""),
+        ("finish", FINISH, ""),
+        ("spring", SPRING, ""),
+        ("pull-out", PULLOUT, ""),
+    ];
+    if divergent {
+        items.push(("divergent (candidate)", DIVERGENT, r#" stroke-width="3.5""#));
+    }
+    let mut x = LEFT;
+    let y = 52.0;
+    for (label, colour, extra) in items {
+        let _ = write!(
+            s,
+            r#"<line x1="{x:.1}" y1="{y}" x2="{x2:.1}" y2="{y}" stroke="{colour}" stroke-width="2"{extra}/><text x="{tx:.1}" y="{ty}">{label}</text>"#,
+            x2 = x + 18.0,
+            tx = x + 22.0,
+            ty = y + 4.0
+        );
+        x += 24.0 + 7.0 * label.len() as f64 + 8.0;
+    }
+    let _ = writeln!(
+        s,
+        r#"<circle cx="{x:.1}" cy="{y}" r="3" fill="{ROUGH}"/><text x="{tx:.1}" y="{ty}">infeed point</text>"#,
+        tx = x + 6.0,
+        ty = y + 4.0
+    );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn plots_the_g92_example_with_its_parts() {
+        let p = crate::corpus::find("g92_example").unwrap();
+        let t = cycle_spec::expand(p.text.as_bytes(), &p.config());
+        let svg = svg("g92_example", &p.config(), &t, None, None);
+        assert!(svg.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\""));
+        assert!(svg.trim_end().ends_with("</svg>"));
+        let moves = t.moves().count();
+        assert_eq!(svg.matches("<line class=").count(), moves);
+        assert_eq!(svg.matches("class=\"pullout\"").count(), 4, "one pull-out per cycle");
+        assert_eq!(svg.matches("class=\"infeed\"").count(), 4, "one infeed point per pass");
+        assert!(svg.contains("stroke-dasharray"));
+        assert!(!svg.contains("class=\"divergent\""));
+    }
+
+    #[test]
+    fn divergent_moves_are_red() {
+        let p = crate::corpus::find("g92_example").unwrap();
+        let t = cycle_spec::expand(p.text.as_bytes(), &p.config());
+        let mut c = t.clone();
+        let i = c.events.iter().position(|e| matches!(e, Event::Move(m) if is_pullout(m.rule))).unwrap();
+        if let Event::Move(m) = &mut c.events[i] {
+            m.x += 1;
+        }
+        let svg = svg("g92_example", &p.config(), &t, Some(&c), Some((i, Some(Rule::G92Pullout))));
+        // The changed move and the one after it (which now starts elsewhere) differ in end
+        // point only for the changed one.
+        assert_eq!(svg.matches("class=\"divergent\"").count(), 1, "{svg}");
+        assert!(svg.contains(&format!("first divergence: event {i}, rule G92.PULLOUT")));
+    }
+
+    #[test]
+    fn ticks_are_round() {
+        assert_eq!(ticks(0.0, 10.0), vec![0.0, 2.0, 4.0, 6.0, 8.0, 10.0]);
+        assert_eq!(ticks(-28.3, 5.2), vec![-25.0, -20.0, -15.0, -10.0, -5.0, 0.0, 5.0]);
+    }
+}

@@ -1,0 +1,167 @@
+//! The candidate protocol end to end, through the `cyclecheck` binary: the example Python
+//! candidate (`examples/g92_candidate.py`) passes `certify --cycles g92`, the same candidate
+//! with its planted bug fails with the divergent move and rule named, and a hostile candidate
+//! (sleeps, floods, garbage, exits) gets each case classified while the run completes.
+//!
+//! These tests need `python3`; without it they print why and pass vacuously (the rest of the
+//! suite covers the protocol in-process: `cycle_oracle::candidate` unit tests).
+
+use cycle_oracle::corpus;
+use cycle_vocab::{Event, Rule};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+fn python3() -> bool {
+    let ok = Command::new("python3").arg("--version").output().is_ok_and(|o| o.status.success());
+    if !ok {
+        eprintln!("SKIPPED: python3 is not installed; the candidate protocol tests need it");
+    }
+    ok
+}
+
+fn out_dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("cyclecheck-candidate-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+fn certify(out: &Path, candidate: &str, extra: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_cyclecheck"))
+        .arg("certify")
+        .arg("--out")
+        .arg(out)
+        .args(["--cycles", "g92", "--candidate", candidate])
+        .args(extra)
+        .output()
+        .expect("cyclecheck runs")
+}
+
+fn evidence(out: &Path) -> serde_json::Value {
+    serde_json::from_slice(&std::fs::read(out.join("evidence.json")).expect("evidence.json written")).expect("JSON")
+}
+
+fn example_candidate(bug: bool) -> String {
+    let script = root().join("examples/g92_candidate.py");
+    format!("python3 '{}'{}", script.display(), if bug { " --plant-bug" } else { "" })
+}
+
+#[test]
+fn the_example_candidate_passes() {
+    if !python3() {
+        return;
+    }
+    let out = out_dir("pass");
+    let o = certify(&out, &example_candidate(false), &["--cases", "60"]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{stdout}\n{}", String::from_utf8_lossy(&o.stderr));
+    assert!(stdout.contains(" 0 diverge, 0 fail"), "{stdout}");
+    let e = evidence(&out);
+    assert_eq!(e["summary"]["passed"], true);
+    assert_eq!(e["candidate"]["name"], "candidate");
+    assert_eq!(e["candidate"]["command"][0], "python3");
+    assert!(e["summary"]["cases"].as_u64().unwrap() >= 60, "{}", e["summary"]);
+    assert!(out.join("index.html").is_file() && out.join("plots/g92_example.svg").is_file());
+    std::fs::remove_dir_all(&out).unwrap();
+}
+
+/// The planted bug moves the end X of the G92 pull-out one increment: the report names that
+/// move's event index and the rule the reference tags it with.
+#[test]
+fn the_planted_bug_is_named_by_move_and_rule() {
+    if !python3() {
+        return;
+    }
+    let p = corpus::find("g92_example").unwrap();
+    let reference = cycle_spec::expand(p.text.as_bytes(), &p.config());
+    let index = reference
+        .events
+        .iter()
+        .position(|e| matches!(e, Event::Move(m) if m.rule == Rule::G92Pullout))
+        .expect("the example has a pull-out");
+    let out = out_dir("bug");
+    let o = certify(&out, &example_candidate(true), &["--cases", "30"]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "{stdout}");
+    let named = format!("DIVERGENCE: field mismatch at event {index}, field `x`");
+    assert!(stdout.contains(&named), "{named:?} not in\n{stdout}");
+    assert!(stdout.contains("rule: G92.PULLOUT (M002, impl)"), "{stdout}");
+    let e = evidence(&out);
+    assert_eq!(e["summary"]["passed"], false);
+    let case = e["cases"].as_array().unwrap().iter().find(|c| c["name"] == "g92_example").unwrap();
+    assert_eq!(case["result"], "diverge");
+    assert_eq!(case["divergence"]["index"], index);
+    assert_eq!(case["divergence"]["field"], "x");
+    assert_eq!(case["divergence"]["rule"], "G92.PULLOUT");
+    assert_eq!(case["divergence"]["values"]["candidate"].as_str().unwrap().parse::<i64>().unwrap(), 64_701);
+    // Its group carries a minimized input that still diverges the same way.
+    let group = &e["divergences"][case["group"].as_u64().unwrap() as usize];
+    assert_eq!(group["signature"]["rule"], "G92.PULLOUT");
+    let min = &group["minimized"];
+    assert_eq!(min["divergence"]["rule"], "G92.PULLOUT");
+    assert!(min["program"].as_str().unwrap().len() < p.text.len(), "{min}");
+    // The plot highlights the divergent move.
+    let svg = std::fs::read_to_string(out.join("plots/g92_example.svg")).unwrap();
+    assert!(svg.contains("class=\"divergent\"") && svg.contains(&format!("first divergence: event {index}, rule G92.PULLOUT")));
+    std::fs::remove_dir_all(&out).unwrap();
+}
+
+/// Each hostile behaviour becomes that case's classified failure, the run goes on to the end,
+/// and the argv reaches the child untouched by any shell.
+#[test]
+fn a_hostile_candidate_is_classified_case_by_case() {
+    if !python3() {
+        return;
+    }
+    let script = root().join("oracle/tests/fixtures/hostile_candidate.py");
+    let candidate = format!("python3 '{}' 'two words' '$HOME;echo' \"q\\\"uote\"", script.display());
+    let out = out_dir("hostile");
+    let o = certify(&out, &candidate, &["--cases", "2", "--timeout-ms", "700", "--max-output", "65536"]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "{stdout}\n{}", String::from_utf8_lossy(&o.stderr));
+    let e = evidence(&out);
+    let cases = e["cases"].as_array().unwrap();
+    assert_eq!(cases.len() as u64, e["summary"]["cases"].as_u64().unwrap());
+    assert!(cases.len() >= 6, "{}", e["summary"]);
+    let kinds: Vec<&str> = cases.iter().map(|c| c["kind"].as_str().unwrap_or("")).collect();
+    assert_eq!(&kinds[..5], ["timeout", "output too large", "garbage output", "crash", "refused"], "{kinds:?}");
+    assert!(kinds[5..].iter().all(|&k| k == "refused"), "the run went on: {kinds:?}");
+    assert!(cases.iter().all(|c| c["result"] == "fail" && c["engine"] == "candidate"));
+    assert!(cases[2]["message"].as_str().unwrap().contains("this is not json"), "{}", cases[2]);
+    assert!(cases[3]["message"].as_str().unwrap().contains("giving up on request 4"), "stderr tail: {}", cases[3]);
+    assert_eq!(cases[4]["message"], r#"argv ["two words", "$HOME;echo", "q\"uote"]"#, "{}", cases[4]);
+    // Restarted after each of the four failures that leave the child in an unknown state.
+    assert_eq!(e["candidate"]["process_starts"], 5);
+    assert_eq!(e["failures"]["timeout"], 1);
+    std::fs::remove_dir_all(&out).unwrap();
+}
+
+/// `diff --candidate` takes several files and names each failure.
+#[test]
+fn diff_runs_a_candidate_on_several_files() {
+    if !python3() {
+        return;
+    }
+    let files = ["corpus/g92_example.nc", "tests/programs/g92_taper.nc"].map(|f| root().join(f));
+    let o = Command::new(env!("CARGO_BIN_EXE_cyclecheck"))
+        .arg("diff")
+        .args(&files)
+        .args(["--candidate", &example_candidate(false)])
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{stdout}");
+    assert_eq!(stdout.matches("conform: ").count(), 2, "{stdout}");
+    assert_eq!(stdout.matches("== ").count(), 2, "{stdout}");
+    let o = Command::new(env!("CARGO_BIN_EXE_cyclecheck"))
+        .arg("diff")
+        .arg(&files[0])
+        .args(["--candidate", "/nonexistent/expander"])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("FAILURE of the candidate engine (spawn failed)"));
+}
