@@ -6,7 +6,7 @@
 //! feeds (F, H, I) lead counts; angles (B, J) 0.001°, A half degrees (docs/INTERPRETATION.md,
 //! "G162 (M004)").
 
-use crate::fixed::mul_tan;
+use crate::fixed::{isqrt, mul_tan, mul_wide};
 use cycle_vocab::{Alarm, AlarmCode, Config, Event, Move, Pass, PassKind, Rule, Units};
 
 /// The depth split of a multi-pass G162: P = thread depth, Q = allowance per pass (radius).
@@ -125,6 +125,28 @@ pub fn pass_count(sp: &SplitParams, limit: u32) -> Option<u32> {
         }
     }
     u32::try_from(count).ok().filter(|&c| c <= limit)
+}
+
+/// G162.F, COM.LONGAXIS: the F to program for a pitch measured along a cone of long-axis
+/// length `long` and radius difference `rise` (same length unit): F = pitch·L/√(L² + r²),
+/// rounded once half up (the manual's example: 2 mm, L = 50, r = 10 → 1.9612 on the lead grid,
+/// printed 1.96). The controller does not convert (register): this is the programmer's
+/// conversion, exact in integers. `None` when L = r = 0 or a product does not fit 128 bits.
+pub fn pitch_along_long_axis(pitch: u64, long: u64, rise: u64) -> Option<u64> {
+    let (f, l, r) = (u128::from(pitch), u128::from(long), u128::from(rise));
+    let den = l.checked_mul(l)?.checked_add(r.checked_mul(r)?)?;
+    if den == 0 {
+        return None;
+    }
+    // x² = F²L²/S exactly; m = ⌊x⌋ = ⌊√⌊F²L²/S⌋⌋; round up when 4F²L² ≥ (2m + 1)²·S.
+    let fl = f.checked_mul(l)?;
+    let num = fl.checked_mul(fl)?;
+    let m = isqrt(num / den);
+    let twice = 2 * m + 1;
+    let lhs = mul_wide(2 * fl, 2 * fl);
+    let rhs = mul_wide(twice * twice, den);
+    let rounded = if lhs >= rhs { m + 1 } else { m };
+    u64::try_from(rounded).ok()
 }
 
 /// The words of a G162 block, converted and range-checked (step 3), with the missing-word
@@ -303,11 +325,8 @@ pub fn cycle(config: &Config, w: &Words, start: (i64, i64), line: u32) -> Result
     let alarm = |code: AlarmCode, word: u8, rule: Rule| Alarm::new(code, Some(word), rule, line);
     let (sx, sz) = (i128::from(start.0), i128::from(start.1));
     // NC201.ABSINC: G91 values are distances from S.
-    let (x0, ze) = if w.incremental {
-        (sx + i128::from(w.x), sz + i128::from(w.z))
-    } else {
-        (i128::from(w.x), i128::from(w.z))
-    };
+    let (x0, ze) =
+        if w.incremental { (sx + i128::from(w.x), sz + i128::from(w.z)) } else { (i128::from(w.x), i128::from(w.z)) };
     // 1. No thread length.
     if ze == sz {
         return Err(alarm(AlarmCode::Geometry, b'Z', Rule::G162Format));
@@ -331,8 +350,7 @@ pub fn cycle(config: &Config, w: &Words, start: (i64, i64), line: u32) -> Result
     // 5. The pass bound.
     let pass = match &w.split {
         Some(sp) => {
-            pass_count(sp, config.params.max_passes)
-                .ok_or(alarm(AlarmCode::TooManyPasses, b'Q', Rule::PrjMaxPass))?;
+            pass_count(sp, config.params.max_passes).ok_or(alarm(AlarmCode::TooManyPasses, b'Q', Rule::PrjMaxPass))?;
             first(sp)
         }
         None => Step { n: 1, depth: 0, last: true, rule: Rule::G162X, stage: 0 },
@@ -425,6 +443,33 @@ mod tests {
         let sp = SplitParams { depth: 999_999_999, allowance: 1 };
         assert_eq!(pass_count(&sp, 10_000), None);
         assert_eq!(pass_count(&sp, u32::MAX), Some(999_999_999));
+    }
+
+    /// G162.F: the manual's cone — 2 mm along a cone 50 mm long with a 20 mm diameter
+    /// difference is F = 2·50/√(50² + 10²) = 1.96116… mm → 1.9612 (lead counts of 0.0001 mm),
+    /// the manual's 1.96. A cylinder keeps the pitch; a steep cone measures along X.
+    #[test]
+    fn manual_pitch_example() {
+        assert_eq!(pitch_along_long_axis(20_000, 50, 10), Some(19_612));
+        assert_eq!(pitch_along_long_axis(20_000, 50_000, 10_000), Some(19_612));
+        assert_eq!(pitch_along_long_axis(20_000, 50, 0), Some(20_000));
+        // 3-4-5: exactly 0.8·F; half-way cases round up: 5·4/5 = 4, 1·1/√2 = 0.707 → 1.
+        assert_eq!(pitch_along_long_axis(5, 4, 3), Some(4));
+        assert_eq!(pitch_along_long_axis(1, 1, 1), Some(1));
+        assert_eq!(pitch_along_long_axis(1, 0, 0), None);
+        // Brute force against the exact bracket for small values.
+        for f in 1..40u64 {
+            for l in 1..25u64 {
+                for r in 0..25u64 {
+                    let m = u128::from(pitch_along_long_axis(f, l, r).unwrap());
+                    let (x2, s) = (4 * u128::from(f * f * l * l), u128::from(l * l + r * r));
+                    assert!(m == 0 || (2 * m - 1) * (2 * m - 1) * s <= x2, "{f} {l} {r}");
+                    assert!(x2 < (2 * m + 1) * (2 * m + 1) * s, "{f} {l} {r}");
+                }
+            }
+        }
+        // The largest values fit: F = 9999 mm, L and r = N.
+        assert!(pitch_along_long_axis(99_990_000, 999_999_999, 999_999_999).is_some());
     }
 
     /// Every P, Q ≤ 60: strictly increasing depths ending exactly at P, full cuts of Q first,

@@ -147,3 +147,6 @@ impl Iterator for Expander<'_> {
 
 #[cfg(test)]
 mod tests;
+
+#[cfg(test)]
+mod g162_tests;

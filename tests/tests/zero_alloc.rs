@@ -2,7 +2,7 @@
 //! allocator, and this checks it at run time too): a counting global allocator counts the
 //! allocations made on this test's thread while whole programs are expanded.
 
-use cycle_vocab::{Config, Grid, Increment, Units};
+use cycle_vocab::{Config, Dialect, Grid, Increment, Units};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
@@ -65,6 +65,7 @@ fn counting_allocator_sees_allocations() {
 fn expanding_any_cycle_allocates_nothing() {
     let metric = Config::default();
     let inch = Config { grid: Grid { units: Units::Inch, increment: Increment::Isc }, ..Config::default() };
+    let nc201 = Config { dialect: Dialect::Nc201, ..Config::default() };
     let programs: &[(&str, Config)] = &[
         (include_str!("../../corpus/g92_example.nc"), metric),
         (include_str!("../../corpus/g76_example.nc"), metric),
@@ -78,6 +79,12 @@ fn expanding_any_cycle_allocates_nothing() {
         ("G0 X40 Z5\nG76 P011060 Q0 R0.1\nG76 X27.4 Z-20 P1.09 Q0.01 F2\n", metric), // 9 801 rough passes
         ("G0 X40 Z5\nG76 X30 Z-20 F2\n", metric),                                 // alarm: missing P
         ("\u{1}\u{2}garbage(", metric),
+        (include_str!("../programs/g162_variable.nc"), nc201),
+        (include_str!("../programs/g162_internal_g91.nc"), nc201),
+        ("G0 X30 Z5\nG162 X24 Z-20 H500 P10.001 Q0.001 V1 A29.5 F1.5 B90 I-0.1 J180\n", nc201), // 10 001 passes: alarm
+        ("G0 X30 Z5\nG162 X24 Z-20 H500 P9.999 Q0.001 V1 A29.5 F1.5 B90 I-0.1 J180\n", nc201), // 9 999 passes
+        (include_str!("../programs/g32_g33_g34.nc"), metric),
+        ("G0 X30 Z5\nG34 X30 Z-20 F2 K-0.05\nG34 W-1 F2 K-5\n", metric), // ends in the G34 bound alarm
     ];
     let mut total_events = 0;
     for (program, config) in programs {
