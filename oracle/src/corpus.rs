@@ -3,8 +3,8 @@
 //! the rule IDs it illustrates.
 //!
 //! Configurations follow the files' header comments: `f76_ex1_microns` runs under the `fanuc`
-//! dialect (F76.MICRONS), the `*_inch` programs in inch units (they write G20), the rest under
-//! the defaults (gsk, metric, ISB, start X0 Z0). The G78 example as printed has infeed mode 05,
+//! dialect (F76.MICRONS), the G162 programs under `nc201` (M004), the `*_inch` programs in inch
+//! units (they write G20), the rest under the defaults (gsk, metric, ISB, start X0 Z0). The G78 example as printed has infeed mode 05,
 //! outside 0…4: its expected result is that alarm (G78.MODE), and an engine that raises it
 //! conforms.
 
@@ -73,6 +73,7 @@ pub const PROGRAMS: &[Program] = &[
     program!("corpus", "f76_ex1", Gsk, Metric, [F76Ex1, F76Format, G76Depth1, G76DepthLast, G76Finish, G76Pullout]),
     program!("corpus", "f76_ex1_microns", Fanuc, Metric, [F76Ex1, F76Microns, PrjDialect, F76Format]),
     program!("corpus", "f76_ex2", Gsk, Metric, [F76Ex2, F76Format, G76Depth1, G76DepthMin, G76DepthLast, G76Finish]),
+    program!("corpus", "g162_cone", Nc201, Metric, [G162F, G162W, G162Pq, G162Path, Nc201XMode]),
     // One program per feature (tests/programs/).
     program!("tests/programs", "g92_taper", Gsk, Metric, [G92Taper, G92Pullout, G92Modal, ComLongAxis]),
     program!("tests/programs", "g92_internal", Gsk, Metric, [ComSide, G92Jk1, G92Pullout, G92Modal]),
@@ -91,6 +92,12 @@ pub const PROGRAMS: &[Program] = &[
     program!("tests/programs", "g78_mode3", Gsk, Metric, [G78Mode, G78DepthMode]),
     program!("tests/programs", "g78_mode4", Gsk, Metric, [G78Mode, G78DepthMode]),
     program!("tests/programs", "g78_constant", Gsk, Metric, [G78DepthMode, G76DepthLast]),
+    program!("tests/programs", "g162_straight", Nc201, Metric, [G162Pq, G162Split, G162V, G162Path, G162Retract]),
+    program!("tests/programs", "g162_taper", Nc201, Metric, [G162W, G162A, G162F, G162V, G162Split]),
+    program!("tests/programs", "g162_multistart", Nc201, Metric, [G162B, G162Pq]),
+    program!("tests/programs", "g162_variable", Nc201, Metric, [G162I, G162J, G162Split]),
+    program!("tests/programs", "g162_internal_g91", Nc201, Metric, [Nc201AbsInc, G162A, G162X, G162F, G162Retract]),
+    program!("tests/programs", "g32_g33_g34", Gsk, Metric, [G32, G33, G34, PrjModal]),
 ];
 
 /// The program named `name` (file stem).
@@ -133,6 +140,7 @@ mod tests {
         for p in PROGRAMS {
             let header = p.text.lines().next().unwrap_or("");
             assert_eq!(header.contains("--dialect fanuc"), p.dialect == Dialect::Fanuc, "{}", p.name);
+            assert_eq!(header.contains("--dialect nc201"), p.dialect == Dialect::Nc201, "{}", p.name);
             assert_eq!(header.contains("--units inch"), p.units == Units::Inch, "{}", p.name);
             assert!(!p.rules.is_empty(), "{} illustrates no rule", p.name);
         }

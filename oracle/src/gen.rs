@@ -7,6 +7,8 @@
 //!   with the edge cases the rules turn on: Δd against Δdmin and k − d (ties included), taper,
 //!   internal threads, inch, every infeed and depth mode, E lead-in, J/K, multi-start, the pass
 //!   bound, and words just outside their ranges.
+//! - [`g162()`]: G162 programs under `nc201` (M004), valid and invalid.
+//! - [`thread_moves`]: G32 / G33 / G34 programs (M003), valid and invalid.
 //! - [`garbage`]: random bytes, random word soup, and the corpus with a few bytes changed.
 //!
 //! Every structured case is built from a fixed-length vector of random *knobs* (`u32`s) by a
@@ -18,6 +20,8 @@
 //! at most about 40 rough passes (a constant one fewer), starts are few, and a large pass count
 //! is only reached through a small `max_passes` — so a case typically runs in well under a
 //! millisecond.
+
+mod g162;
 
 use crate::corpus;
 use cycle_vocab::text::fixed;
@@ -69,6 +73,16 @@ pub fn multipass() -> impl Strategy<Value = Case> {
     knobs().prop_map(|k| build_multipass(&mut Dice::new(&k)))
 }
 
+/// G162 programs under `nc201`.
+pub fn g162() -> impl Strategy<Value = Case> {
+    knobs().prop_map(|k| g162::build_g162(&mut Dice::new(&k)))
+}
+
+/// G32, G33, G34 programs.
+pub fn thread_moves() -> impl Strategy<Value = Case> {
+    knobs().prop_map(|k| g162::build_thread_moves(&mut Dice::new(&k)))
+}
+
 /// Random bytes, word soup, corpus mutants.
 pub fn garbage() -> impl Strategy<Value = Case> {
     let bytes = (proptest::collection::vec(any::<u8>(), 0..200), knobs()).prop_map(|(program, k)| {
@@ -82,7 +96,7 @@ pub fn garbage() -> impl Strategy<Value = Case> {
 
 /// Any family.
 pub fn any_case() -> impl Strategy<Value = Case> {
-    prop_oneof![4 => g92(), 4 => multipass(), 1 => garbage()]
+    prop_oneof![4 => g92(), 4 => multipass(), 2 => g162(), 1 => thread_moves(), 1 => garbage()]
 }
 
 /// A knob-built family, for drivers other than proptest (the fuzz targets draw the knobs from
@@ -94,6 +108,10 @@ pub enum Family {
     Multipass,
     Soup,
     Mutant,
+    /// G162 under `nc201`.
+    G162,
+    /// G32, G33, G34.
+    ThreadMoves,
 }
 
 /// The case the knobs describe; knobs past the end of `knobs` are 0 (the ordinary choice).
@@ -104,6 +122,8 @@ pub fn build(family: Family, knobs: &[u32]) -> Case {
         Family::Multipass => build_multipass(&mut d),
         Family::Soup => build_soup(&mut d),
         Family::Mutant => build_mutant(&mut d),
+        Family::G162 => g162::build_g162(&mut d),
+        Family::ThreadMoves => g162::build_thread_moves(&mut d),
     }
 }
 

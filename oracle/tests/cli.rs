@@ -200,8 +200,10 @@ fn diff_exit_codes_follow_the_relation() {
     for p in corpus::PROGRAMS {
         let file = root().join(p.path);
         let mut args = vec!["diff", file.to_str().unwrap()];
-        if p.config().dialect == cycle_vocab::Dialect::Fanuc {
-            args.extend(["--dialect", "fanuc"]);
+        match p.config().dialect {
+            cycle_vocab::Dialect::Gsk => {}
+            cycle_vocab::Dialect::Fanuc => args.extend(["--dialect", "fanuc"]),
+            cycle_vocab::Dialect::Nc201 => args.extend(["--dialect", "nc201"]),
         }
         if p.config().grid.units == cycle_vocab::Units::Inch {
             args.extend(["--units", "inch"]);

@@ -84,6 +84,13 @@ pub fn retract_side_ok(s_x: i128, x0: i128, wd: i128, v: i64, s: i128, line: u32
     }
 }
 
+/// G162.W (M004; OPEN reference): the taper Wd (diameter) is the X change over segment ②,
+/// signed, positive away from the axis; W omitted or 0: cylindrical. The thread of a pass at X
+/// `start_x` ends at `start_x + Wd`.
+pub fn thread_end_x(start_x: i128, wd: i128) -> i128 {
+    start_x + wd
+}
+
 /// G162.PQ (M004): k = ⌊P / Q⌋ full passes at Q, 2Q, …, kQ, and the remainder D = P − kQ < Q.
 pub fn full_passes(p: i64, q: i64) -> (i64, i64) {
     (p / q, p % q)
@@ -231,7 +238,7 @@ impl Pass<'_> {
         let t = z_shift(depth, c.a_half, s);
         let bn = (c.x0 - 2 * s * depth as i128, c.s.1 + t);
         out.feed(bn.0, bn.1, h, Rule::G162Path, line)?;
-        let en = (bn.0 + c.wd, self.ze1 + t);
+        let en = (thread_end_x(bn.0, c.wd), self.ze1 + t);
         out.variable_thread(en.0, en.1, c.lead, self.angle, self.law, Rule::G162F, line)?;
         let leg = (en.0 + 2 * s * c.v as i128, c.ze + t);
         out.feed(leg.0, leg.1, h, Rule::G162V, line)?;

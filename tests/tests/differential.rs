@@ -6,10 +6,13 @@
 //! - G92 programs (valid and invalid, modal repeats, J/K combinations, multi-start, grids);
 //! - G76 / G78 / FANUC G76 two-block programs (modes, depth schedules and their ties, tapers,
 //!   internal threads, lead-in, pull-outs, the pass bound);
+//! - G162 programs under `nc201` (M004: depth split, infeed angle, leg, taper, variable pitch,
+//!   G90/G91, X radius or diameter, every cycle check);
+//! - G32 / G33 / G34 thread-move programs (M003: start angles, lead changes, modal repeats);
 //! - garbage (random bytes, word soup, corpus mutants): the same alarm, never a panic.
 //!
-//! Cases per campaign: `CYCLECHECK_CASES` (default 10 000 for G92 and G76/G78, a fifth of it for
-//! garbage); RNG seed: `CYCLECHECK_SEED` (a u64; a fixed default, so runs repeat). A failure
+//! Cases per campaign: `CYCLECHECK_CASES` (default 10 000 for G92, G76/G78, G162 and the thread
+//! moves, a fifth of it for garbage); RNG seed: `CYCLECHECK_SEED` (a u64; a fixed default, so runs repeat). A failure
 //! is shrunk to a minimal program, then reported as the divergence (kind, event, field, both
 //! values as canonical G-code, the rule and its catalogue text, context) and the program text.
 
@@ -77,6 +80,16 @@ fn g92_programs_conform() {
 #[test]
 fn g76_g78_programs_conform() {
     campaign("G76/G78", gen::multipass(), 10_000);
+}
+
+#[test]
+fn g162_programs_conform() {
+    campaign("G162", gen::g162(), 10_000);
+}
+
+#[test]
+fn g32_g33_g34_programs_conform() {
+    campaign("G32/G33/G34", gen::thread_moves(), 10_000);
 }
 
 #[test]

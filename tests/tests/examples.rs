@@ -1,7 +1,8 @@
 //! The manuals' examples and one program per feature, expanded by the reference spec and
 //! snapshotted as canonical G-code (insta), with the production expander checked against the
 //! spec by the conformance relation on each. Rule IDs: G92.EXAMPLE, G76.EXAMPLE, G78.EXAMPLE,
-//! F76.EX1, F76.EX2, F76.MICRONS, COM.MULTISTART, G76.MODE, G78.MODE, G78.DEPTHMODE, COM.UNITS.
+//! F76.EX1, F76.EX2, F76.MICRONS, COM.MULTISTART, G76.MODE, G78.MODE, G78.DEPTHMODE, COM.UNITS,
+//! G162.* (G162.SPLIT: the manual's P2.5 Q1 sequence), G32, G33, G34.
 
 use cycle_oracle::conformance;
 use cycle_vocab::text::Trace;
@@ -13,6 +14,10 @@ fn gsk() -> Config {
 
 fn fanuc() -> Config {
     Config { dialect: Dialect::Fanuc, ..Config::default() }
+}
+
+fn nc201() -> Config {
+    Config { dialect: Dialect::Nc201, ..Config::default() }
 }
 
 fn inch() -> Config {
@@ -68,6 +73,16 @@ snapshot!(g78_mode2, "../programs/g78_mode2.nc", gsk());
 snapshot!(g78_mode3, "../programs/g78_mode3.nc", gsk());
 snapshot!(g78_mode4, "../programs/g78_mode4.nc", gsk());
 snapshot!(g78_constant, "../programs/g78_constant.nc", gsk());
+
+// G162 (M004, nc201): the manual's cone, a straight, a taper, a multi-start, a variable-pitch
+// and an internal G91 thread; the thread moves G32/G33/G34 (M003).
+snapshot!(g162_cone, "../../corpus/g162_cone.nc", nc201());
+snapshot!(g162_straight, "../programs/g162_straight.nc", nc201());
+snapshot!(g162_taper, "../programs/g162_taper.nc", nc201());
+snapshot!(g162_multistart, "../programs/g162_multistart.nc", nc201());
+snapshot!(g162_variable, "../programs/g162_variable.nc", nc201());
+snapshot!(g162_internal_g91, "../programs/g162_internal_g91.nc", nc201());
+snapshot!(g32_g33_g34, "../programs/g32_g33_g34.nc", gsk());
 
 /// Thread cuts (the first synchronized move after each pass header): (X, Z) of its end.
 fn cuts(trace: &Trace) -> Vec<(PassKind, i64, i64)> {

@@ -9,6 +9,10 @@
 //! (G76.DEPTH.LAST, G76.FINISH); every cut but the last rough one is ≥ Δdmin; the pass count
 //! stays within PRJ.MAXPASS; every point stays inside the envelope of the start point, the
 //! thread and the pull-out (COM.POINTS); the cycle ends at its start point (G76.PATH).
+//! G162: depths strictly increase, never pass P and end at P; full passes Q, 2Q, …; the split
+//! cuts sum exactly to the remainder (G162.PQ, G162.SPLIT); a variable pitch is never ≤ 0 and a
+//! growing one stays in the F range (G162.I); every pass starts and ends at S, at feed H, never
+//! at rapid (G162.PATH, G162.H).
 
 use cycle_vocab::text::{fixed, Trace};
 use cycle_vocab::{AlarmCode, Config, Event, Grid, Increment, MoveKind, PassKind, Units};
@@ -340,6 +344,190 @@ proptest! {
                 last = (m.x, m.z);
             }
             prop_assert_eq!(last, (ax, az), "cycle ends at A: {}", ctx);
+        }
+    }
+}
+
+// ---------------------------------------------------------------- G162 (M004, nc201)
+
+#[derive(Debug, Clone)]
+struct G162Case {
+    grid: Grid,
+    /// Start point S (X diameter).
+    sx: i64,
+    sz: i64,
+    x0: i64,
+    ze: i64,
+    /// (P, Q), radius; `None` = single pass.
+    pq: Option<(i64, i64)>,
+    v: i64,
+    /// Taper, diameter.
+    w: i64,
+    a_half: i64,
+    lead: i64,
+    i: i64,
+    j: i64,
+    b: i64,
+    h: i64,
+}
+
+fn g162_case() -> impl Strategy<Value = G162Case> {
+    (
+        grid_strategy(),
+        (any::<bool>(), any::<bool>(), any::<bool>()),
+        (magnitude(50_000_000), 1i64..=200, any::<u64>()),
+        (0i64..=5_000_000, -4_000_000i64..=4_000_000, 1i64..=100_000_000),
+        (-120i64..=120, any::<u64>(), any::<u64>(), 1i64..=1_000_000, 0i64..=360_000),
+        (any::<u64>(), -10_000_000i64..=10_000_000),
+    )
+        .prop_map(|(grid, (internal, toward_plus, single), (p, ratio, qr), (v, w, len), (a_half, fr, ir, j, b), (sr, sz))| {
+            // Q around P/ratio: ties (D = 0), Q > P and remainders of any size all occur.
+            let q = match qr % 4 {
+                0 => (p / ratio).max(1),
+                1 => p,
+                2 => p + 1 + (qr >> 8) as i64 % p.max(1),
+                _ => ((p / ratio) + (qr >> 8) as i64 % 7).max(1),
+            };
+            let w = 2 * (w / 2);
+            // S lies outside the whole depth-0 path (G162.RETRACT): room for 2V and the taper.
+            let room = 2 * v + w.abs() + 2 * (1 + (sr % 1_000_000) as i64);
+            let sx = 2 * (sr >> 20) as i64 % 200_000_000;
+            let x0 = if internal { sx + room } else { sx - room };
+            let len = len + v;
+            let ze = if toward_plus { sz + len } else { sz - len };
+            let lead = lead_for(grid, fr);
+            // I: none, shrinking, or growing within the F range at the end (G162.I).
+            let c = grid.lead_counts_per_increment() as i128;
+            let s2 = if 2 * (len - v) as i128 > w.abs() as i128 { 2 * (len - v) as i128 * c } else { w.abs() as i128 * c };
+            let fmax: i64 = if grid.units == Units::Metric { 99_990_000 } else { 999_000 };
+            let room_i = (j as i128 * (fmax as i128 * fmax as i128 - lead as i128 * lead as i128)) / (360_000 * s2.max(1));
+            let i = match ir % 3 {
+                0 => 0,
+                1 => -(1 + (ir >> 2) as i64 % fmax),
+                _ if room_i >= 1 => 1 + ((ir >> 2) as i128 % room_i.min(fmax as i128)) as i64,
+                _ => 0,
+            };
+            G162Case {
+                grid,
+                sx,
+                sz,
+                x0,
+                ze,
+                pq: if single { None } else { Some((p, q)) },
+                v,
+                w,
+                a_half,
+                lead,
+                i,
+                j,
+                b,
+                h: 1 + (fr >> 32) as i64 % 99_990_000,
+            }
+        })
+}
+
+impl G162Case {
+    fn program(&self) -> String {
+        let g = self.grid;
+        let (d, ld) = (g.decimals(), g.lead_decimals());
+        let mut block = format!(
+            "G162 X{} Z{} H{} F{} V{} W{} A{} B{} J{}",
+            len(self.x0, g),
+            len(self.ze, g),
+            fixed(self.h, ld),
+            fixed(self.lead, ld),
+            fixed(self.v, d),
+            fixed(self.w, d),
+            fixed(self.a_half * 5, 1),
+            fixed(self.b, 3),
+            fixed(self.j, 3)
+        );
+        if let Some((p, q)) = self.pq {
+            block += &format!(" P{} Q{}", fixed(p, d), fixed(q, d));
+        }
+        if self.i != 0 {
+            block += &format!(" I{}", fixed(self.i, ld));
+        }
+        format!("G0 X{} Z{}\n{block}\nM30\n", len(self.sx, g), len(self.sz, g))
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: cases(), failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// G162.PQ, G162.SPLIT: depths strictly increase, never pass P and end at P; the full passes
+    /// are Q, 2Q, …; the split cuts (at most four, the first round(D/2)) sum exactly to the
+    /// remainder D. G162.I: a variable pitch is never ≤ 0 and a growing one stays within the F
+    /// range. G162.PATH: every pass returns to S at H, nothing moves at rapid.
+    #[test]
+    fn g162_depths_split_and_pitch(case in g162_case()) {
+        let program = case.program();
+        let config = Config {
+            dialect: cycle_vocab::Dialect::Nc201,
+            grid: case.grid,
+            params: cycle_vocab::Params { max_passes: 1_000_000, ..cycle_vocab::Params::default() },
+            ..Config::default()
+        };
+        for (engine, trace) in both(&program, config) {
+            let ctx = format!("{engine} on\n{program}\n{}", trace.to_gcode());
+            prop_assert!(trace.alarm.is_none(), "legal program refused: {}", ctx);
+            let depths: Vec<i64> = trace.events.iter().filter_map(|e| match e {
+                Event::Pass(p) => Some(p.diameter_depth / 2),
+                Event::Move(_) => None,
+            }).collect();
+            match case.pq {
+                None => prop_assert_eq!(depths.clone(), vec![0], "single pass: {}", ctx),
+                Some((p, q)) => {
+                    prop_assert!(depths.windows(2).all(|w| w[0] < w[1]), "strictly increasing: {}", ctx);
+                    prop_assert!(depths.iter().all(|&d| d > 0 && d <= p), "within 0 < d ≤ P: {}", ctx);
+                    prop_assert_eq!(depths.last().copied(), Some(p), "ends at P: {}", ctx);
+                    let k = (p / q) as usize;
+                    let full: Vec<i64> = (1..=k as i64).map(|n| n * q).collect();
+                    prop_assert_eq!(&depths[..k], &full[..], "full passes Q, 2Q, …: {}", ctx);
+                    let remainder = p - k as i64 * q;
+                    let split: Vec<i64> = depths[k..].iter().scan(k as i64 * q, |prev, &d| {
+                        let cut = d - *prev;
+                        *prev = d;
+                        Some(cut)
+                    }).collect();
+                    prop_assert!(split.len() <= 4, "at most D/2, D/4, D/8, rest: {}", ctx);
+                    prop_assert_eq!(split.iter().sum::<i64>(), remainder, "cuts sum to D: {}", ctx);
+                    if remainder > 0 {
+                        prop_assert_eq!(split[0], (remainder + 1) / 2, "first split cut round(D/2): {}", ctx);
+                    }
+                }
+            }
+            let fmax = if case.grid.units == Units::Metric { 99_990_000i128 } else { 999_000 };
+            let c = case.grid.lead_counts_per_increment() as i128;
+            // From the first pass header on (the G00 to S before it may be a no-op).
+            let first = trace.events.iter().position(|e| matches!(e, Event::Pass(_))).unwrap_or(0);
+            let mut pos = (case.sx, case.sz);
+            let mut at_s = true;
+            for e in &trace.events[first..] {
+                match e {
+                    Event::Pass(_) => prop_assert!(at_s, "each pass starts at S: {}", ctx),
+                    Event::Move(m) => {
+                        prop_assert!(m.kind != MoveKind::Rapid, "no rapid in G162: {}", ctx);
+                        if m.kind == MoveKind::Feed {
+                            prop_assert_eq!(m.feed, case.h, "feed H: {}", ctx);
+                        } else {
+                            prop_assert_eq!(m.feed, case.lead, "{}", ctx);
+                            // Never ≤ 0: a shrinking lead stops at a positive floor.
+                            prop_assert!(m.feed > 0 && (m.lead_change >= 0 || m.lead_floor > 0), "{}", ctx);
+                            if m.lead_change > 0 {
+                                let (dz, dx) = ((m.z - pos.1).abs() as i128, (m.x - pos.0).abs() as i128);
+                                let s2 = if 2 * dz > dx { 2 * dz * c } else { dx * c };
+                                let j = m.lead_change_angle as i128;
+                                let f = m.feed as i128;
+                                prop_assert!(j * f * f + 360_000 * m.lead_change as i128 * s2 <= j * fmax * fmax, "{}", ctx);
+                            }
+                        }
+                        pos = (m.x, m.z);
+                    }
+                }
+                at_s = pos == (case.sx, case.sz);
+            }
+            prop_assert!(at_s, "the cycle ends at S: {}", ctx);
         }
     }
 }
