@@ -71,7 +71,8 @@ pub enum Outcome {
     Pass { cases: usize },
     /// `divergences` divergent cases name it (of `cases` exercising it).
     Fail { cases: usize, divergences: usize },
-    /// Implemented, but no case of this run exercised it (its rule tag appears in no trace).
+    /// Implemented, but no reference trace of this run carries its tag (rules such as COM.AXES
+    /// shape every trace without tagging a move: see the citations for their checks).
     NotExercised,
     /// The catalogue does not mark it implemented (`later`, `unsupported`).
     NotImplemented,
@@ -82,7 +83,7 @@ impl Outcome {
         match self {
             Outcome::Pass { cases } => format!("pass ({cases} cases)"),
             Outcome::Fail { cases, divergences } => format!("FAIL ({divergences} of {cases} cases)"),
-            Outcome::NotExercised => "not exercised".to_string(),
+            Outcome::NotExercised => "untagged in this run".to_string(),
             Outcome::NotImplemented => "not implemented".to_string(),
         }
     }
