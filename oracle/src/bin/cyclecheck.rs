@@ -42,7 +42,7 @@ candidate options (diff, certify; docs/CANDIDATE.md):
   --max-output BYTES        longest answer line per case (default 67108864)
 certify options:
   --out DIR                 where the bundle goes (default evidence)
-  --cycles LIST             all (default) or a comma list of g92, g76, g78, f76
+  --cycles LIST             all (default) or a comma list of g92, g76, g78, f76, g162, g32
   --cases N                 generated cases per family (default 500; garbage gets a fifth)
   --seed S                  seed of the generated campaign (default 6912920065418837504)
 exit: 0 ok / conform, 1 the engines diverge or the candidate fails, 2 an alarm or bad input";

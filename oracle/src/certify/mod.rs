@@ -38,7 +38,34 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::time::{Duration, Instant};
 
 /// The cycles a run covers, by their `--cycles` names.
-pub const CYCLES: &[(&str, &str)] = &[("g92", "G92"), ("g76", "G76"), ("g78", "G78"), ("f76", "G76 fanuc")];
+pub const CYCLES: &[(&str, &str)] = &[
+    ("g92", "G92"),
+    ("g76", "G76"),
+    ("g78", "G78"),
+    ("f76", "G76 fanuc"),
+    ("g162", "G162"),
+    ("g32", "G32/G33/G34"),
+];
+
+/// The cycle a program exercises: [`cycle_of`]'s name (`G92`, `G76`, `G76 fanuc`, `G78`), else
+/// `G162` or `G32/G33/G34` for the first of those codes, else `none`.
+pub fn cycle(program: &[u8], config: &Config) -> &'static str {
+    match cycle_of(program, config) {
+        "none" => {}
+        named => return named,
+    }
+    for block in cycle_vocab::Blocks::new(program) {
+        let Ok(block) = block else { break };
+        for g in block.g_codes().iter().filter(|g| !g.point && !g.negative) {
+            match g.mantissa {
+                162 => return "G162",
+                32..=34 => return "G32/G33/G34",
+                _ => {}
+            }
+        }
+    }
+    "none"
+}
 
 /// The default seed of the generated campaign (the differential tests' default).
 pub const DEFAULT_SEED: u64 = 0x5eed_c7c1_e0ac_1e00;
@@ -80,7 +107,7 @@ impl Options {
         self.cycles.len() == CYCLES.len()
     }
 
-    /// Parses `--cycles`: `all` or a comma list of `g92`, `g76`, `g78`, `f76`.
+    /// Parses `--cycles`: `all` or a comma list of `g92`, `g76`, `g78`, `f76`, `g162`, `g32`.
     pub fn parse_cycles(list: &str) -> Result<BTreeSet<&'static str>, String> {
         if list == "all" {
             return Ok(CYCLES.iter().map(|&(_, c)| c).collect());
@@ -89,13 +116,15 @@ impl Options {
         for name in list.split(',').map(str::trim) {
             match CYCLES.iter().find(|&&(n, _)| n == name) {
                 Some(&(_, cycle)) => set.insert(cycle),
-                None => return Err(format!("--cycles takes all or a comma list of g92, g76, g78, f76, not {name:?}")),
+                None => {
+                    return Err(format!("--cycles takes all or a comma list of g92, g76, g78, f76, g162, g32, not {name:?}"))
+                }
             };
         }
         Ok(set)
     }
 
-    /// Whether a case of `cycle` (a [`cycle_of`] name, `none` for no cycle) is in the run: with
+    /// Whether a case of `cycle` (a [`cycle`] name, `none` for no cycle) is in the run: with
     /// every cycle selected, any case is.
     pub fn covers(&self, cycle: &str) -> bool {
         self.all_cycles() || self.cycles.contains(cycle)
@@ -145,7 +174,7 @@ pub enum Origin {
 pub struct CaseRecord {
     pub name: String,
     pub origin: Origin,
-    /// [`cycle_of`] the program: `G92`, `G76`, `G76 fanuc`, `G78` or `none`.
+    /// [`cycle`] of the program: `G92`, `G76`, `G76 fanuc`, `G78`, `G162`, `G32/G33/G34` or `none`.
     pub cycle: &'static str,
     pub program: Vec<u8>,
     pub config: Config,
@@ -375,6 +404,12 @@ fn families(options: &Options) -> Vec<(&'static str, BoxedStrategy<gen::Case>, u
     if ["G76", "G78", "G76 fanuc"].iter().any(|c| options.cycles.contains(c)) {
         f.push(("multipass", gen::multipass().boxed(), options.cases));
     }
+    if options.cycles.contains("G162") {
+        f.push(("g162", gen::g162().boxed(), options.cases));
+    }
+    if options.cycles.contains("G32/G33/G34") {
+        f.push(("thread_moves", gen::thread_moves().boxed(), options.cases));
+    }
     if options.all_cycles() {
         f.push(("garbage", gen::garbage().boxed(), options.cases.div_ceil(5)));
     }
@@ -386,7 +421,7 @@ fn case_list(options: &Options) -> (Vec<Pending>, Vec<FamilyRun>) {
     let mut list = Vec::new();
     for p in corpus::PROGRAMS {
         let config = p.config();
-        if options.covers(cycle_of(p.text.as_bytes(), &config)) {
+        if options.covers(cycle(p.text.as_bytes(), &config)) {
             list.push(Pending {
                 name: p.name.to_string(),
                 origin: Origin::Corpus { path: p.path },
@@ -405,7 +440,7 @@ fn case_list(options: &Options) -> (Vec<Pending>, Vec<FamilyRun>) {
         for index in 0..count {
             let Ok(tree) = strategy.new_tree(&mut runner) else { continue };
             let case = tree.current();
-            if !options.covers(cycle_of(&case.program, &case.config)) {
+            if !options.covers(cycle(&case.program, &case.config)) {
                 continue;
             }
             kept += 1;
@@ -504,7 +539,7 @@ pub fn run(options: &Options, progress: &mut dyn FnMut(Progress)) -> Result<Run,
         records.push(CaseRecord {
             name: p.name.clone(),
             origin: p.origin.clone(),
-            cycle: cycle_of(&p.program, &p.config),
+            cycle: cycle(&p.program, &p.config),
             program: p.program.clone(),
             config: p.config,
             events,
@@ -639,7 +674,8 @@ mod tests {
     fn cycles_option() {
         assert_eq!(Options::parse_cycles("g92").unwrap(), BTreeSet::from(["G92"]));
         assert_eq!(Options::parse_cycles("g76,f76").unwrap(), BTreeSet::from(["G76", "G76 fanuc"]));
-        assert_eq!(Options::parse_cycles("all").unwrap().len(), 4);
+        assert_eq!(Options::parse_cycles("all").unwrap().len(), CYCLES.len());
+        assert_eq!(Options::parse_cycles("g162,g32").unwrap(), BTreeSet::from(["G162", "G32/G33/G34"]));
         assert!(Options::parse_cycles("g93").is_err());
         let o = Options { cycles: Options::parse_cycles("g92").unwrap(), ..Options::default() };
         assert!(o.covers("G92") && !o.covers("G78") && !o.covers("none"));
@@ -652,7 +688,7 @@ mod tests {
         let (a, fa) = case_list(&o);
         let (b, _) = case_list(&o);
         assert_eq!(a.iter().map(|p| &p.program).collect::<Vec<_>>(), b.iter().map(|p| &p.program).collect::<Vec<_>>());
-        assert!(a.iter().all(|p| cycle_of(&p.program, &p.config) == "G92"));
+        assert!(a.iter().all(|p| cycle(&p.program, &p.config) == "G92"));
         assert_eq!(a.iter().filter(|p| matches!(p.origin, Origin::Corpus { .. })).count(), 5);
         assert_eq!((fa.len(), fa[0].family, fa[0].drawn, fa[0].kept), (1, "g92", 20, 20));
         let other = Options { seed: 1, ..o };
