@@ -222,6 +222,13 @@ fn variable_pitch_and_start_angle() {
         al(AlarmCode::Geometry, b'I', Rule::G162I, 2)
     );
     assert_eq!(alarm_of("G0 X50 Z5\nG162 X44 Z-30 H600 F1 I1\n", c), None);
+    // The bound's edge: F = Fmax − 10 counts, I·s2·360 000 = J·(Fmax² − F²) exactly with
+    // ΔZ = 1 increment (s2 = 20 counts): the end lead is exactly Fmax — accepted; ΔZ = 2 is not.
+    assert_eq!(alarm_of("G0 X50 Z5\nG162 X44 Z4.999 H600 F9998.999 I9998.9995\n", c), None);
+    assert_eq!(
+        alarm_of("G0 X50 Z5\nG162 X44 Z4.998 H600 F9998.999 I9998.9995\n", c),
+        al(AlarmCode::Geometry, b'I', Rule::G162I, 2)
+    );
     // The lead at the end: L² = F² + 720 000·I·s/J never below the floor.
     let th = threads(&expand("G0 X50 Z5\nG162 X44 Z-30 H600 F1 I1\n", c));
     assert_eq!((th[0].feed, th[0].lead_change, th[0].lead_change_angle), (10_000, 10_000, 360_000));

@@ -17,3 +17,5 @@ pub mod fixed_point;
 pub mod mutation;
 pub mod expander_envelope;
 pub mod g92_pullout;
+pub mod g162_split;
+pub mod g162_pitch;
