@@ -30,10 +30,10 @@ usage:
   cyclecheck fuzz [--budget SECS] [--targets T,..] [--out DIR] [--features F] [--write-seeds]
                                                             nightly fuzz campaign
 options:
-  --dialect gsk|fanuc       input conventions (default gsk)
+  --dialect gsk|fanuc|nc201 input conventions (default gsk)
   --units metric|inch       (default metric)
   --increment isb|isc       least increment (default isb)
-  --param N=V               machine parameter: 19, 107, 18, 5130, 5131, 5140..5145, max_passes
+  --param N=V               machine parameter: 19, 107, 18, 5130, 5131, 5140..5145, max_passes, x_radius
   --start-x X --start-z Z   machine position at program start, mm or inch (default 0 0)
 candidate options (diff, certify; docs/CANDIDATE.md):
   --candidate CMD           an external expander speaking cyclecheck-candidate/1; CMD is split
@@ -190,7 +190,8 @@ fn parse(args: &[String], allow_engine: bool) -> Result<Options, Bad> {
                 o.config.dialect = match value {
                     "gsk" => Dialect::Gsk,
                     "fanuc" => Dialect::Fanuc,
-                    _ => return bad(format!("--dialect takes gsk or fanuc, not {value:?}")),
+                    "nc201" => Dialect::Nc201,
+                    _ => return bad(format!("--dialect takes gsk, fanuc or nc201, not {value:?}")),
                 }
             }
             "--units" => {
