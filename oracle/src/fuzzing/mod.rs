@@ -140,7 +140,13 @@ pub fn impl_invariants(data: &[u8]) -> Result<(), String> {
     // Small lengths, where legal cycles have many passes (the proofs' `random_small` scope).
     const SMALL: expander_envelope::Scope =
         expander_envelope::Scope { max_start: 2000, max_len: 60, max_lead: 3000, max_passes: 60, max_program: 160, ..expander_envelope::WIDE };
-    const G92: g92_pullout::Scope = g92_pullout::Scope { max_len: 1_000_000, max_lead: 99_990_000, ..g92_pullout::KANI };
+    // Wider than the Kani scope: lengths to 1 mm·1000, any lead, the writer's whole buffer.
+    const G92: g92_pullout::Scope = g92_pullout::Scope {
+        max_len: 1_000_000,
+        max_lead: 99_990_000,
+        max_program: cycle_proofs::program::CAPACITY,
+        ..g92_pullout::KANI
+    };
     const SEQUENCE: depth_bounds::Scope = depth_bounds::Scope { max_passes: 64, ..depth_bounds::KANI };
     let mut src = FuzzSource::new(data);
     let (name, outcome) = match cycle_proofs::source::Source::choose(&mut src, 6) {
