@@ -25,24 +25,35 @@ pub enum CycleInput {
     Literal { config: u8, program: Vec<u8> },
 }
 
-/// The first byte (mod 16): 0–6 G76/G78/FANUC G76, 7–10 G92, 11 word soup, 12 corpus mutant,
-/// 13–15 literal.
-const FAMILY_BYTES: u8 = 16;
+/// The first byte (mod 20): 0–6 G76/G78/FANUC G76, 7–10 G92, 11 word soup, 12 corpus mutant,
+/// 13–15 literal, 16–17 G162 under `nc201`, 18–19 G32/G33/G34. (Families 16–19 came after the
+/// first seeds; bytes 0–15 kept their meaning, and the committed seeds' first bytes are < 16.)
+const FAMILY_BYTES: u8 = 20;
 const LITERAL: u8 = 13;
 
-/// The configuration of a literal program: bit 0 FANUC, bit 1 inch, bit 2 ISC.
+/// The configuration of a literal program: bit 0 FANUC, bit 1 inch, bit 2 ISC, bit 3 `nc201`
+/// (before bit 0), bit 4 `x_radius` = 1 (NC201.XMODE; other dialects alarm on it). Bits 5–7 are
+/// ignored.
 pub fn literal_config(bits: u8) -> Config {
     let units = if bits & 2 != 0 { Units::Inch } else { Units::Metric };
     let increment = if bits & 4 != 0 { Increment::Isc } else { Increment::Isb };
-    let dialect = if bits & 1 != 0 { Dialect::Fanuc } else { Dialect::Gsk };
-    Config { dialect, grid: Grid { units, increment }, ..Config::default() }
+    let dialect = match (bits & 8 != 0, bits & 1 != 0) {
+        (true, _) => Dialect::Nc201,
+        (false, true) => Dialect::Fanuc,
+        (false, false) => Dialect::Gsk,
+    };
+    let mut config = Config { dialect, grid: Grid { units, increment }, ..Config::default() };
+    config.params.x_radius = u32::from(bits & 16 != 0);
+    config
 }
 
-/// The bits of [`literal_config`] for a configuration on the ISB grid with default parameters.
+/// The bits of [`literal_config`] for a configuration with default parameters (but `x_radius`).
 pub fn literal_bits(config: &Config) -> u8 {
     u8::from(config.dialect == Dialect::Fanuc)
         | if config.grid.units == Units::Inch { 2 } else { 0 }
         | if config.grid.increment == Increment::Isc { 4 } else { 0 }
+        | if config.dialect == Dialect::Nc201 { 8 } else { 0 }
+        | if config.params.x_radius == 1 { 16 } else { 0 }
 }
 
 impl<'a> Arbitrary<'a> for CycleInput {
@@ -52,8 +63,10 @@ impl<'a> Arbitrary<'a> for CycleInput {
             7..=10 => Family::G92,
             11 => Family::Soup,
             12 => Family::Mutant,
+            16 | 17 => Family::G162,
+            18 | 19 => Family::ThreadMoves,
             _ => {
-                let config = u.arbitrary::<u8>()? & 7;
+                let config = u.arbitrary::<u8>()? & 31;
                 let program = u.bytes(u.len())?.to_vec();
                 return Ok(CycleInput::Literal { config, program });
             }
@@ -117,5 +130,17 @@ mod tests {
         let c = CycleInput::from_bytes(&bytes).case();
         assert_eq!((c.family, c.program.as_slice(), c.config), ("literal", &b"G0 X1 Z1\n"[..], inch_fanuc));
         assert_eq!(literal_bits(&literal_config(6)), 6);
+    }
+
+    #[test]
+    fn nc201_and_its_families_are_reachable() {
+        let radius = literal_config(8 | 16 | 1);
+        assert_eq!((radius.dialect, radius.params.x_radius), (Dialect::Nc201, 1));
+        assert_eq!(literal_bits(&radius), 8 | 16);
+        for (byte, family) in [(16, "g162"), (17, "g162"), (18, "thread"), (19, "thread"), (20, "g76")] {
+            let case = CycleInput::from_bytes(&[byte]).case();
+            assert_eq!(case.family, family, "first byte {byte}");
+        }
+        assert_eq!(CycleInput::from_bytes(&[16]).case().config.dialect, Dialect::Nc201);
     }
 }

@@ -10,7 +10,7 @@
 //! |---|---|---|
 //! | `parse_blocks` | any bytes as a program | the lexer ends, one alarm at most, on a line of the program; both engines expand it under two configurations without a panic, reject it with an alarm on a line of the program, and conform (a rejection is the same alarm in both) |
 //! | `diff_spec_impl` | [`CycleInput`]: a generator family and its knobs | spec and impl conform ([`crate::conformance::check`]) |
-//! | `impl_invariants` | draws of a proof harness ([`FuzzSource`]) | the `cycle-proofs` harness bodies (envelope, event bound, return to A, G92 pull-out table, depth schedule by induction and iteration) and the depth properties on the trace ([`trace_depths`]) |
+//! | `impl_invariants` | draws of a proof harness ([`FuzzSource`]) | the `cycle-proofs` harness bodies (envelope, event bound, return to A, G92 pull-out table, depth schedule by induction and iteration, the G162 split and variable pitch) and the depth properties on the trace ([`trace_depths`]) |
 //! | `gcode_roundtrip` | [`CycleInput`] | canonical expanded G-code of either engine reads back ([`crate::readback`]) as the same motions: kind, end point, feed or lead, angle, lead change |
 
 mod input;
@@ -24,7 +24,7 @@ use crate::campaign::{judge, Verdict};
 use crate::engine::{Engine, ImplEngine, SpecEngine};
 use crate::readback::{self, Motion};
 use cycle_proofs::source::Stop;
-use cycle_proofs::{depth_bounds, depth_step_monotone, expander_envelope, g92_pullout, schedule::Production};
+use cycle_proofs::{depth_bounds, depth_step_monotone, expander_envelope, g162_pitch, g162_split, g92_pullout, schedule::Production};
 use cycle_vocab::{Blocks, Config, Dialect, Grid, Increment, Rule, Units};
 
 /// A fuzz target.
@@ -155,7 +155,13 @@ pub fn impl_invariants(data: &[u8]) -> Result<(), String> {
         2 => ("g92_pullout_total", g92_pullout::body(&mut src, &G92)),
         3 => ("depth_step_monotone", depth_step_monotone::body(&mut src, &Production, &depth_step_monotone::FULL)),
         4 => ("depth_bounds", depth_bounds::body(&mut src, &Production, &SEQUENCE)),
-        _ => ("trace_depths", trace_depths::body(&mut src)),
+        // Index 5 is split three ways (the G162 harnesses came after the committed cases, whose
+        // first choice keeps its meaning).
+        _ => match cycle_proofs::source::Source::choose(&mut src, 3) {
+            0 => ("trace_depths", trace_depths::body(&mut src)),
+            1 => ("g162_split_exact", g162_split::body(&mut src, &g162_split::KANI)),
+            _ => ("g162_variable_pitch", g162_pitch::body(&mut src, &g162_pitch::KANI)),
+        },
     };
     match outcome {
         Err(Stop::Failed(msg)) => Err(format!("harness {name}: {msg}\ndraws: {:?}", src.draws)),
@@ -213,7 +219,7 @@ pub fn seeds(target: Target) -> Vec<(String, Vec<u8>)> {
     match target {
         Target::ParseBlocks => {}
         Target::DiffSpecImpl | Target::GcodeRoundtrip => {
-            for (name, first) in [("g76_g78_f76", 0u8), ("g92", 7), ("soup", 11), ("mutant", 12)] {
+            for (name, first) in [("g76_g78_f76", 0u8), ("g92", 7), ("soup", 11), ("mutant", 12), ("g162", 16), ("g32_g33_g34", 18)] {
                 out.push((format!("{name}_plain"), vec![first]));
                 for i in 0..6 {
                     let mut bytes = vec![first];
@@ -224,12 +230,15 @@ pub fn seeds(target: Target) -> Vec<(String, Vec<u8>)> {
         }
         Target::ImplInvariants => {
             // The first draw picks the harness: mode byte 0 (uniform), then the index.
-            for harness in 0..6u8 {
-                out.push((format!("harness_{harness}_plain"), vec![0, harness]));
+            // Harness 5 has a second draw: 0 trace depths, 1 and 2 the G162 harnesses.
+            for (name, head) in [("harness_0", &[0u8, 0][..]), ("harness_1", &[0, 1]), ("harness_2", &[0, 2]), ("harness_3", &[0, 3]),
+                ("harness_4", &[0, 4]), ("harness_5", &[0, 5]), ("g162_split", &[0, 5, 0, 1]), ("g162_pitch", &[0, 5, 0, 2])]
+            {
+                out.push((format!("{name}_plain"), head.to_vec()));
                 for i in 0..4 {
-                    let mut bytes = vec![0, harness];
+                    let mut bytes = head.to_vec();
                     bytes.extend(random_bytes(400));
-                    out.push((format!("harness_{harness}_random_{i}"), bytes));
+                    out.push((format!("{name}_random_{i}"), bytes));
                 }
             }
         }
@@ -252,7 +261,7 @@ mod tests {
         }
         let families: std::collections::BTreeSet<_> =
             seeds(Target::DiffSpecImpl).iter().map(|(_, b)| CycleInput::from_bytes(b).case().family).collect();
-        let expected = ["f76", "g76", "g78", "g92", "literal", "mutant", "soup"];
+        let expected = ["f76", "g162", "g76", "g78", "g92", "literal", "mutant", "soup", "thread"];
         assert_eq!(families.into_iter().collect::<Vec<_>>(), expected);
     }
 
