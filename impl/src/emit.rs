@@ -51,6 +51,8 @@ pub struct Cycle {
     cut: Cut,
     header: Option<Pass>,
     start: u32,
+    /// The spindle start angle of `start` (COM.MULTISTART), computed once per start.
+    angle: u32,
     step: u8,
 }
 
@@ -64,7 +66,7 @@ fn add(p: (i64, i64), d: (i64, i64)) -> (i64, i64) {
 impl Cycle {
     /// A cycle whose first pass has the header `header` and geometry `cut`.
     pub fn new(path: Path, plan: Plan, header: Pass, cut: Cut) -> Cycle {
-        Cycle { path, plan, cut, header: Some(header), start: 0, step: 0 }
+        Cycle { path, plan, cut, header: Some(header), start: 0, angle: 0, step: 0 }
     }
 
     /// Where the cut of the current pass ends, after the pull-out if any.
@@ -78,8 +80,7 @@ impl Cycle {
     /// The move of `step` for the current start, or `None` when the step has no move.
     fn move_at(&self, step: u8) -> Option<Move> {
         let p = &self.path;
-        let angle = start_angle(self.start, p.starts);
-        let thread = |(x, z): (i64, i64), rule: Rule| Some(Move::thread(x, z, p.lead, angle, rule));
+        let thread = |(x, z): (i64, i64), rule: Rule| Some(Move::thread(x, z, p.lead, self.angle, rule));
         match step {
             // G76.PATH / G92.PATH ①: rapid to the infeed point (to the lead-in point first).
             0 => {
@@ -113,8 +114,10 @@ impl Cycle {
             if self.step >= STEPS {
                 self.step = 0;
                 self.start = self.start.saturating_add(1);
+                self.angle = start_angle(self.start, self.path.starts);
                 if self.start >= self.path.starts {
                     self.start = 0;
+                    self.angle = 0;
                     let Plan::Multi(multi) = &mut self.plan else {
                         return None;
                     };
