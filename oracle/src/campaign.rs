@@ -213,32 +213,10 @@ mod tests {
     use crate::conformance::DivergenceKind;
     use crate::engine::SpecEngine;
 
-    /// The spec with every X one increment off after the first event: a wrong candidate.
-    struct OffByOne;
-    impl Engine for OffByOne {
-        fn name(&self) -> &str {
-            "off-by-one"
-        }
-        fn expand(&self, program: &[u8], config: &Config) -> Trace {
-            let mut t = cycle_spec::expand(program, config);
-            for e in t.events.iter_mut().skip(1) {
-                if let Event::Move(m) = e {
-                    m.x += 1;
-                }
-            }
-            t
-        }
-    }
+    use crate::engine::wrong::{Panics, SpecWith};
 
-    struct Panics;
-    impl Engine for Panics {
-        fn name(&self) -> &str {
-            "panics"
-        }
-        fn expand(&self, _: &[u8], _: &Config) -> Trace {
-            panic!("boom")
-        }
-    }
+    /// The spec with every X one increment off after the first event: a wrong candidate.
+    const OFF_BY_ONE: SpecWith = SpecWith { name: "off-by-one", fault: |i, m| m.x += i64::from(i > 0) };
 
     #[test]
     fn spec_against_itself_conforms_on_the_corpus() {
@@ -258,7 +236,7 @@ mod tests {
 
     #[test]
     fn a_wrong_candidate_is_found_on_every_moving_program() {
-        let r = run((&SpecEngine, &OffByOne), crate::corpus::cases());
+        let r = run((&SpecEngine, &OFF_BY_ONE), crate::corpus::cases());
         // Every program but the G78 example (one rapid, then its alarm) moves more than once.
         assert_eq!(r.findings.len(), r.cases() - 1, "{}", r.summary());
         for (f, d) in r.divergences() {

@@ -139,6 +139,48 @@ pub fn by_name(name: &str) -> Option<Box<dyn Engine>> {
     }
 }
 
+/// Deliberately wrong engines for the oracle's own tests: a harness that cannot tell them from
+/// the spec is broken.
+#[cfg(test)]
+pub(crate) mod wrong {
+    use super::Engine;
+    use cycle_vocab::text::Trace;
+    use cycle_vocab::{Config, Event, Move};
+
+    /// The spec with `fault` applied to every move (with its event index): a wrong candidate.
+    pub struct SpecWith {
+        pub name: &'static str,
+        pub fault: fn(usize, &mut Move),
+    }
+
+    impl Engine for SpecWith {
+        fn name(&self) -> &str {
+            self.name
+        }
+        fn expand(&self, program: &[u8], config: &Config) -> Trace {
+            let mut t = cycle_spec::expand(program, config);
+            for (i, e) in t.events.iter_mut().enumerate() {
+                if let Event::Move(m) = e {
+                    (self.fault)(i, m);
+                }
+            }
+            t
+        }
+    }
+
+    /// An engine that panics on every program.
+    pub struct Panics;
+
+    impl Engine for Panics {
+        fn name(&self) -> &str {
+            "panics"
+        }
+        fn expand(&self, _: &[u8], _: &Config) -> Trace {
+            panic!("boom")
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -651,24 +651,13 @@ fn minimize(engine: &dyn Engine, record: &CaseRecord, pending: &mut Pending, sig
 mod tests {
     use super::*;
 
+    use crate::engine::wrong::{Panics, SpecWith};
+
     /// The spec with the X of every thread move one increment off: a wrong candidate.
-    struct ThreadXOff;
-    impl Engine for ThreadXOff {
-        fn name(&self) -> &str {
-            "thread-x-off"
-        }
-        fn expand(&self, program: &[u8], config: &Config) -> Trace {
-            let mut t = cycle_spec::expand(program, config);
-            for e in &mut t.events {
-                if let cycle_vocab::Event::Move(m) = e {
-                    if m.kind == cycle_vocab::MoveKind::Thread {
-                        m.x += 1;
-                    }
-                }
-            }
-            t
-        }
-    }
+    const THREAD_X_OFF: SpecWith = SpecWith {
+        name: "thread-x-off",
+        fault: |_, m| m.x += i64::from(m.kind == cycle_vocab::MoveKind::Thread),
+    };
 
     #[test]
     fn cycles_option() {
@@ -701,7 +690,7 @@ mod tests {
         let o = Options { cycles: Options::parse_cycles("g92").unwrap(), cases: 10, ..Options::default() };
         let (mut list, _) = case_list(&o);
         let p = &list[0];
-        let (r, c, result) = judge(&SpecEngine, &ThreadXOff, &p.program, &p.config);
+        let (r, c, result) = judge(&SpecEngine, &THREAD_X_OFF, &p.program, &p.config);
         assert!(r.is_some() && c.is_some());
         let CaseResult::Diverge(d) = &result else { panic!("{result:?}") };
         assert_eq!(d.field, Some("x"));
@@ -717,7 +706,7 @@ mod tests {
             result: result.clone(),
             traces: None,
         };
-        let m = minimize(&ThreadXOff, &record, &mut list[0], signature(d)).unwrap();
+        let m = minimize(&THREAD_X_OFF, &record, &mut list[0], signature(d)).unwrap();
         assert_eq!(m.method, "line deletion");
         assert!(m.program.len() < record.program.len(), "{}", String::from_utf8_lossy(&m.program));
         assert_eq!(signature(&m.divergence), signature(d));
@@ -725,15 +714,6 @@ mod tests {
 
     #[test]
     fn panics_are_failures() {
-        struct Panics;
-        impl Engine for Panics {
-            fn name(&self) -> &str {
-                "panics"
-            }
-            fn expand(&self, _: &[u8], _: &Config) -> Trace {
-                panic!("boom")
-            }
-        }
         let (_, _, r) = judge(&SpecEngine, &Panics, b"G0 X1", &Config::default());
         assert_eq!(r, CaseResult::Failure { engine: "panics".into(), failure: Failure { kind: FailureKind::Panic, message: "boom".into() } });
         assert_eq!(r.short(), "FAIL (panics panic)");
