@@ -103,8 +103,7 @@ pub fn next(sp: &SplitParams, prev: &Step) -> Option<Step> {
         // Full pass n at depth nQ ≤ kQ ≤ P.
         return Some(step(n, u64::from(n).saturating_mul(q.q), &q, 0));
     }
-    let from = if prev.stage == 0 { 0 } else { prev.stage };
-    split_after(&q, from, prev_depth, n)
+    split_after(&q, prev.stage, prev_depth, n)
 }
 
 /// PRJ.MAXPASS: the number of passes, or `None` when it exceeds `limit`. Closed form: the k
@@ -187,7 +186,9 @@ pub const fn max_lead(units: Units) -> i64 {
     }
 }
 
-fn sat(v: i128) -> i64 {
+/// `v` as `i64`, saturating toward its sign (the path stays far inside `i64` for legal words; this
+/// keeps an out-of-range value from wrapping).
+pub(crate) fn sat(v: i128) -> i64 {
     i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
 }
 

@@ -565,3 +565,15 @@ fn g162_programs_expand() {
         std::println!("== {name}\n{}", gcode(src, nc201()));
     }
 }
+
+/// `sat` saturates toward the value's sign and is exact inside `i64`.
+#[test]
+fn sat_saturates_toward_the_sign() {
+    use crate::g162::sat;
+    assert_eq!(sat(i128::MAX), i64::MAX);
+    assert_eq!(sat(i128::MIN), i64::MIN);
+    assert_eq!(sat(i128::from(i64::MAX) + 1), i64::MAX);
+    assert_eq!(sat(i128::from(i64::MIN) - 1), i64::MIN);
+    assert_eq!(sat(-7), -7);
+    assert_eq!(sat(0), 0);
+}

@@ -3,7 +3,7 @@
 //! G162 programs cover the register's input space: external and internal threads, G90 and G91,
 //! X as diameter or radius (`x_radius`), single and multi-pass (P/Q ties, Q > P, remainders of a
 //! few increments), the run-out leg V, taper W, half-degree infeed angles of both signs, B, a
-//! variable pitch I over J (growing, shrinking, already below |I|), F omitted (modal feed), and
+//! variable pitch I over J (growing, shrinking, already below |I|, F = |I| exactly), F omitted (modal feed), and
 //! words just outside their ranges, missing words and every cycle check. Thread-move programs
 //! chain G32/G33/G34 blocks with modal repeats, G33 start angles and G34 lead changes that keep
 //! or lose a legal lead. Pass counts stay small (≤ about 40), so a case runs in microseconds.
@@ -107,11 +107,15 @@ pub(super) fn build_g162(dice: &mut Dice) -> Case {
             words.push(('A', text));
         }
         // F: written (mostly), or omitted (modal feed, or MISSING WORD F).
+        let mut f_counts = None;
         if !d.chance(15) {
             let f = lead(d, grid).map(|l| match l {
                 super::Lead::I(_) => super::Lead::F(LEAD_UNIT + d.range(0, LEAD_UNIT)),
                 other => other,
             });
+            if let Ok(super::Lead::F(c)) = f {
+                f_counts = Some(c);
+            }
             words.push(lead_text(&mut w, &f, grid));
         }
         if d.chance(25) {
@@ -123,11 +127,13 @@ pub(super) fn build_g162(dice: &mut Dice) -> Case {
             words.push(('B', b));
         }
         if d.chance(25) {
-            let i = match d.weighted(&[45, 45, 5, 5]) {
+            let i = match d.weighted(&[45, 45, 5, 5, 5]) {
                 0 => d.range(1, LEAD_UNIT / 2),
                 1 => -d.range(1, 2 * LEAD_UNIT),
                 2 => d.range(LEAD_UNIT, 2_000 * LEAD_UNIT),
-                _ => 100_000 * LEAD_UNIT,
+                3 => 100_000 * LEAD_UNIT,
+                // The tie |I| = F: a shrinking lead that starts at its floor never changes.
+                _ => -f_counts.unwrap_or(LEAD_UNIT),
             };
             words.push(('I', w.length(i, lead_dec)));
             if d.chance(50) {
