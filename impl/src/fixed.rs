@@ -62,6 +62,12 @@ pub fn sqrt_round(n: u128) -> u128 {
     }
 }
 
+/// `v` as `i64`, saturating toward its sign. Legal words keep every coordinate far inside
+/// `i64`; this keeps an out-of-range intermediate from wrapping.
+pub fn sat(v: i128) -> i64 {
+    i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
+}
+
 /// `num / den` rounded half up; `den = 0` gives 0 (callers never divide by zero).
 pub fn div_round(num: u128, den: u128) -> u128 {
     if den == 0 {
@@ -327,6 +333,15 @@ pub fn start_angle(j: u32, l: u32) -> u32 {
 mod tests {
     extern crate std;
     use super::*;
+
+    #[test]
+    fn sat_saturates_toward_the_sign() {
+        assert_eq!(sat(i128::MAX), i64::MAX);
+        assert_eq!(sat(i128::MIN), i64::MIN);
+        assert_eq!(sat(i128::from(i64::MAX) + 1), i64::MAX);
+        assert_eq!(sat(i128::from(i64::MIN) - 1), i64::MIN);
+        assert_eq!((sat(-7), sat(0), sat(7)), (-7, 0, 7));
+    }
 
     #[test]
     fn mul_wide_matches_small_products() {

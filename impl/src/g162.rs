@@ -6,7 +6,7 @@
 //! feeds (F, H, I) lead counts; angles (B, J) 0.001°, A half degrees (docs/INTERPRETATION.md,
 //! "G162 (M004)").
 
-use crate::fixed::{isqrt, mul_tan, mul_wide};
+use crate::fixed::{isqrt, mul_tan, mul_wide, sat};
 use cycle_vocab::{Alarm, AlarmCode, Config, Event, Move, Pass, PassKind, Rule, Units};
 
 /// The depth split of a multi-pass G162: P = thread depth, Q = allowance per pass (radius).
@@ -184,12 +184,6 @@ pub const fn max_lead(units: Units) -> i64 {
         Units::Metric => 99_990_000,
         Units::Inch => 999_000,
     }
-}
-
-/// `v` as `i64`, saturating toward its sign (the path stays far inside `i64` for legal words; this
-/// keeps an out-of-range value from wrapping).
-pub(crate) fn sat(v: i128) -> i64 {
-    i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
 }
 
 fn sign(v: i128) -> i64 {

@@ -229,6 +229,13 @@ fn variable_pitch_and_start_angle() {
         alarm_of("G0 X50 Z5\nG162 X44 Z4.998 H600 F9998.999 I9998.9995\n", c),
         al(AlarmCode::Geometry, b'I', Rule::G162I, 2)
     );
+    // The edge with X the long axis (|Wd| = 4 mm > 2|ΔZ|: s2 = 4 000·10 = 40 000 counts), J360:
+    // F = Fmax − 200 counts, I = (Fmax² − F²)/s2 = 999 899 counts exactly — accepted; I + 1 not.
+    assert_eq!(alarm_of("G0 X50 Z5\nG162 X44 Z4.999 W4 H600 F9998.98 I99.9899 J360\n", c), None);
+    assert_eq!(
+        alarm_of("G0 X50 Z5\nG162 X44 Z4.999 W4 H600 F9998.98 I99.99 J360\n", c),
+        al(AlarmCode::Geometry, b'I', Rule::G162I, 2)
+    );
     // The lead at the end: L² = F² + 720 000·I·s/J never below the floor.
     let th = threads(&expand("G0 X50 Z5\nG162 X44 Z-30 H600 F1 I1\n", c));
     assert_eq!((th[0].feed, th[0].lead_change, th[0].lead_change_angle), (10_000, 10_000, 360_000));
@@ -566,14 +573,3 @@ fn g162_programs_expand() {
     }
 }
 
-/// `sat` saturates toward the value's sign and is exact inside `i64`.
-#[test]
-fn sat_saturates_toward_the_sign() {
-    use crate::g162::sat;
-    assert_eq!(sat(i128::MAX), i64::MAX);
-    assert_eq!(sat(i128::MIN), i64::MIN);
-    assert_eq!(sat(i128::from(i64::MAX) + 1), i64::MAX);
-    assert_eq!(sat(i128::from(i64::MIN) - 1), i64::MIN);
-    assert_eq!(sat(-7), -7);
-    assert_eq!(sat(0), 0);
-}

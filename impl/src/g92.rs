@@ -1,5 +1,6 @@
 //! G92 single thread cycle (M002): the modal run and the cycle's checks and path.
 
+use crate::fixed::sat;
 use crate::emit::{Cut, Cycle, Path, Plan};
 use crate::pullout::{g92_amounts, offsets, tenths_of_lead, travel};
 use cycle_vocab::{Alarm, AlarmCode, Config, Pass, PassKind, Rule};
@@ -33,10 +34,6 @@ impl G92State {
         self.r = 0;
         self.index = 0;
     }
-}
-
-fn sat(v: i128) -> i64 {
-    i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
 }
 
 /// One G92 cycle from `a` with the run's values: checks in the register's order — W = 0

@@ -3,6 +3,7 @@
 //! order of docs/INTERPRETATION.md — (2) G and M codes, conflicts, allowed words alphabetically;
 //! (3) values alphabetically; (4) missing words; (5) the cycle's own checks.
 
+use crate::fixed::sat;
 use crate::emit::Cycle;
 use crate::g162::{self, max_lead, SplitParams};
 use crate::g92::{self, G92State};
@@ -111,10 +112,6 @@ fn allowed(kind: Kind, dialect: Dialect) -> &'static [u8] {
 
 /// FANUC tool angles (F76.FORMAT).
 pub const FANUC_ANGLES: [u32; 6] = [80, 60, 55, 30, 29, 0];
-
-fn sat(v: i128) -> i64 {
-    i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
-}
 
 impl Machine {
     pub fn new(config: Config) -> Machine {

@@ -2,7 +2,7 @@
 //! second block's checks (step 5 of the check order) and the pass plan.
 
 use crate::emit::{Cut, Cycle, Path, Plan};
-use crate::fixed::mul_tan;
+use crate::fixed::{mul_tan, sat};
 use crate::pullout::{multi_amounts, offsets, tenths_of_lead, travel};
 use crate::schedule::{self, Rough, ScheduleParams};
 use cycle_vocab::{Alarm, AlarmCode, Config, Pass, PassKind, Rule};
@@ -136,10 +136,6 @@ pub struct Multi {
     a: u32,
     /// t(T) = round(T·tan(a/2)).
     t_target: i64,
-}
-
-fn sat(v: i128) -> i64 {
-    i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
 }
 
 impl Multi {

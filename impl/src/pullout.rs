@@ -2,7 +2,7 @@
 //! COM.LONGAXIS). Amounts are radius increments; offsets returned are relative to the thread
 //! end point, X on diameter.
 
-use crate::fixed::{div_round, div_round_signed, mul_tan};
+use crate::fixed::{div_round, div_round_signed, mul_tan, sat};
 use cycle_vocab::Grid;
 
 /// A resolved pull-out: J on the short axis, K along the long axis (both > 0).
@@ -82,10 +82,6 @@ pub fn travel(w: i64, r: i64) -> u64 {
     } else {
         r.unsigned_abs()
     }
-}
-
-fn sat(v: i128) -> i64 {
-    i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
 }
 
 /// G92.PULLOUT geometry (also G76.PATH with R = i): `w` is the thread's Z travel (≠ 0), `r` the
