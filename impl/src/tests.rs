@@ -363,6 +363,40 @@ fn pass_bound() {
     let cfg = Config { params: Params { max_passes: 2, ..Params::default() }, ..Config::default() };
     let t = expand("G0 X35 Z5\nG92 X29.2 Z-20 F3 L3\n", cfg);
     assert_eq!(t.alarm, alarm(AlarmCode::TooManyPasses, Some(b'L'), Rule::PrjMaxPass, 2));
+    // G92: L = max_passes is allowed.
+    let t = expand("G0 X35 Z5\nG92 X29.2 Z-20 F3 L2\n", cfg);
+    assert_eq!((t.alarm, passes(&t).len()), (None, 1));
+}
+
+/// G92.JK.2 / G76.PULLOUT: a pull-out amount that comes out 0 (No.19 = 0 with K alone; J from
+/// K·tan(1°) below half an increment) means no pull-out, not a zero-length one.
+#[test]
+fn zero_pullout_amounts_mean_no_pullout() {
+    let cfg = Config { params: Params { no19_pullout: 0, ..Params::default() }, ..Config::default() };
+    let t = expand("G0 X65 Z5\nG92 X58.7 Z-28 F3 K1\n", cfg);
+    assert_eq!(t.alarm, None);
+    assert_eq!(threads(&t), [(58_700, -28_000)]);
+    let cfg = Config { params: Params { p5131_chamfer_angle: 1, ..Params::default() }, ..Config::default() };
+    let t = expand("G0 X40 Z5\nG76 P011060 Q0.1 R0.1\nG76 X27.4 Z-20 P1.095 Q0.3 F2 K0.001\n", cfg);
+    assert_eq!(t.alarm, None);
+    assert!(t.moves().all(|m| m.rule != Rule::G76Pullout), "{}", t.to_gcode());
+    assert_eq!(t.moves().filter(|m| m.kind == MoveKind::Thread).count(), passes(&t).len());
+}
+
+/// PRJ.SUPPORTED: M codes up to M99 are read (M02/M30 end the program), M100 is refused.
+#[test]
+fn m_code_range() {
+    let t = expand("G0 X1 Z1 M99\nG0 X2\n", Config::default());
+    assert_eq!((t.alarm, moves(&t).len()), (None, 2));
+    let t = expand("G0 X1 Z1\nM100\n", Config::default());
+    assert_eq!(t.alarm, alarm(AlarmCode::UnsupportedCode, Some(b'M'), Rule::PrjSupported, 2));
+}
+
+/// The sign helper of the pull-out: −1, 0, 1.
+#[test]
+fn sign_of_zero_is_zero() {
+    use crate::pullout::sign;
+    assert_eq!((sign(-5), sign(0), sign(5)), (-1, 0, 1));
 }
 
 /// The check order of a block and the alarm each check names.
