@@ -105,5 +105,9 @@ mod tests {
         let fmax = max_lead(G.units);
         assert!(thread_move(ThreadCode::G34, (0, 0), (0, -1), &w(fmax, 0, 1), G, 4).is_err());
         assert!(thread_move(ThreadCode::G34, (0, 0), (0, -1), &w(fmax - 1, 0, 1), G, 4).is_ok());
+        // The exact edge: F = Fmax − 200 counts, s2 = 2·1 000·10 = 20 000 counts and
+        // K·s2 = Fmax² − F² = 39 995 960 000: the end lead is exactly Fmax — allowed; K + 1 is not.
+        assert!(thread_move(ThreadCode::G34, (0, 0), (0, -1_000), &w(fmax - 200, 0, 1_999_798), G, 4).is_ok());
+        assert!(thread_move(ThreadCode::G34, (0, 0), (0, -1_000), &w(fmax - 200, 0, 1_999_799), G, 4).is_err());
     }
 }
