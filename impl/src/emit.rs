@@ -78,6 +78,7 @@ impl Cycle {
     }
 
     /// The move of `step` for the current start, or `None` when the step has no move.
+    #[inline]
     fn move_at(&self, step: u8) -> Option<Move> {
         let p = &self.path;
         let thread = |(x, z): (i64, i64), rule: Rule| Some(Move::thread(x, z, p.lead, self.angle, rule));
@@ -106,6 +107,7 @@ impl Cycle {
 
     /// The next event of the cycle, updating the machine position; `None` when it is done.
     /// Bounded work: at most [`STEPS`] skipped moves and one pass change per call.
+    #[inline]
     pub fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
         loop {
             if let Some(h) = self.header.take() {

@@ -94,7 +94,26 @@ impl<'a> Expander<'a> {
 impl Iterator for Expander<'_> {
     type Item = Result<Event, Alarm>;
 
+    /// The hot path — the next move of a running G92/G76/G78 cycle — is small enough to inline
+    /// into the caller's loop, so the event is written straight to where the caller keeps it;
+    /// everything else is [`Expander::next_slow`].
+    #[inline]
     fn next(&mut self) -> Option<Self::Item> {
+        if let Some(Running::Thread(c)) = &mut self.cycle {
+            if let Some(e) = c.next_event(&mut self.machine.pos) {
+                return Some(Ok(e));
+            }
+            // The cycle is done (a cycle is not fused: it must not be asked again).
+            self.cycle = None;
+        }
+        self.next_slow()
+    }
+}
+
+impl Expander<'_> {
+    /// Every event but the hot path's: the configuration check, blocks, G162, the end.
+    #[inline(never)]
+    fn next_slow(&mut self) -> Option<Result<Event, Alarm>> {
         if self.done {
             return None;
         }
