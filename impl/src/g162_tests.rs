@@ -148,6 +148,12 @@ fn g91_and_x_radius() {
     let t = expand("G91 G0 X10 Z5\nG1 Z-2 F1\nX-4\nG90 X3\n", nc201());
     let ends: Vec<(i64, i64)> = t.moves().map(|m| (m.x, m.z)).collect();
     assert_eq!(ends, [(10_000, 5_000), (10_000, 3_000), (6_000, 3_000), (3_000, 3_000)]);
+    // Only nc201 reads x_radius: under gsk and fanuc X stays a diameter.
+    for dialect in [Dialect::Gsk, Dialect::Fanuc] {
+        let cfg = Config { dialect, params: Params { x_radius: 1, ..Params::default() }, ..Config::default() };
+        let t = expand("G0 X15 Z5\nG1 X14 F1\n", cfg);
+        assert_eq!((t.alarm, moves(&t).iter().map(|m| m.x).collect::<Vec<_>>()), (None, std::vec![15_000, 14_000]), "{dialect:?}");
+    }
 }
 
 /// G162.A sign rule and Z shift: σ = s·sign(A); the whole pass moves by t(d) =
