@@ -3,7 +3,7 @@
 //! fuzzing of the new codes.
 extern crate std;
 
-use crate::tests::{expand, gcode};
+use crate::tests::{expand, gcode, grid_of_round, xorshift};
 use cycle_vocab::text::Trace;
 use cycle_vocab::{
     Alarm, AlarmCode, Config, Dialect, Event, Grid, Increment, Move, MoveKind, Params, Pass, PassKind, Rule, Units,
@@ -381,13 +381,6 @@ fn thread_moves() {
     assert_eq!(p.iter().map(|p| (p.index, p.diameter_depth)).collect::<Vec<_>>(), [(1, 12_000), (1, 10_000)]);
 }
 
-fn xorshift(state: &mut u64) -> u64 {
-    *state ^= *state << 13;
-    *state ^= *state >> 7;
-    *state ^= *state << 17;
-    *state
-}
-
 /// Random legal G162 cycles in every grid, external and internal, G90 and G91, radius or
 /// diameter X: depths strictly increase and end exactly at P (never past it), full cuts first,
 /// each split cut on its target; the last pass cuts at X0 − 2s·P; every pass returns to S; no
@@ -398,10 +391,7 @@ fn random_legal_g162_cycles() {
     let mut checked = 0;
     for round in 0..1_500u32 {
         let mut r = || xorshift(&mut s);
-        let grid = Grid {
-            units: if round % 2 == 0 { Units::Metric } else { Units::Inch },
-            increment: if round % 4 < 2 { Increment::Isb } else { Increment::Isc },
-        };
+        let grid = grid_of_round(round);
         let x_radius = u32::from(round % 8 >= 4);
         let dec = grid.decimals();
         let len = |v: i64| cycle_vocab::text::fixed(v, dec);

@@ -510,11 +510,20 @@ fn stream_rules() {
     assert_eq!(moves(&t), [Move::feed(5_000, -1_000, 20_000, Rule::PrjModal)]);
 }
 
-fn xorshift(state: &mut u64) -> u64 {
+/// A fixed-seed xorshift generator for the random drivers (here and in `g162_tests`).
+pub fn xorshift(state: &mut u64) -> u64 {
     *state ^= *state << 13;
     *state ^= *state >> 7;
     *state ^= *state << 17;
     *state
+}
+
+/// The grid of round `round` of a random driver: every units/increment pair in turn.
+pub fn grid_of_round(round: u32) -> Grid {
+    Grid {
+        units: if round.is_multiple_of(2) { Units::Metric } else { Units::Inch },
+        increment: if round % 4 < 2 { Increment::Isb } else { Increment::Isc },
+    }
 }
 
 /// No input panics: random bytes, random word soups, random and extreme configurations.
@@ -606,10 +615,7 @@ fn random_legal_multipass_cycles() {
     let mut checked = 0;
     for round in 0..1_500u32 {
         let mut r = || xorshift(&mut s);
-        let grid = Grid {
-            units: if round % 2 == 0 { Units::Metric } else { Units::Inch },
-            increment: if round % 4 < 2 { Increment::Isb } else { Increment::Isc },
-        };
+        let grid = grid_of_round(round);
         let dec = grid.decimals();
         let len = |v: i64| cycle_vocab::text::fixed(v, dec);
         let k = 2 + (r() % 3_000) as i64;
