@@ -114,30 +114,110 @@ impl Cycle {
                 return Some(Event::Pass(h));
             }
             if self.step >= STEPS {
-                self.step = 0;
-                self.start = self.start.saturating_add(1);
-                self.angle = start_angle(self.start, self.path.starts);
-                if self.start >= self.path.starts {
-                    self.start = 0;
-                    self.angle = 0;
-                    let Plan::Multi(multi) = &mut self.plan else {
-                        return None;
-                    };
-                    let (header, cut) = multi.advance()?;
-                    self.header = Some(header);
-                    self.cut = cut;
+                if !self.next_start() {
+                    return None;
                 }
                 continue;
             }
             let mv = self.move_at(self.step);
             self.step += 1;
             if let Some(m) = mv {
-                // PRJ.NOOP: a move to the current position is not emitted.
-                if (m.x, m.z) != *pos {
-                    *pos = (m.x, m.z);
-                    return Some(Event::Move(m));
+                if let Some(e) = emit(m, pos) {
+                    return Some(e);
                 }
             }
         }
     }
+
+    /// Moves on to the next start, or to the next pass after the last start; `false` when the
+    /// cycle is done.
+    fn next_start(&mut self) -> bool {
+        self.step = 0;
+        self.start = self.start.saturating_add(1);
+        if self.start < self.path.starts {
+            self.angle = start_angle(self.start, self.path.starts);
+            return true;
+        }
+        self.start = 0;
+        self.angle = 0;
+        let Plan::Multi(multi) = &mut self.plan else {
+            return false;
+        };
+        match multi.advance() {
+            Some((header, cut)) => {
+                self.header = Some(header);
+                self.cut = cut;
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// Writes the cycle's next events into `out`, the same events as [`Cycle::next_event`]:
+    /// whole starts (pass header and moves) at a time while one fits, one event at a time
+    /// otherwise. Returns how many were written and whether the cycle is done.
+    /// Bounded work: [`START_EVENTS`] events and one pass change per start.
+    #[inline]
+    pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> (usize, bool) {
+        let mut n = 0;
+        loop {
+            if self.step >= STEPS && !self.next_start() {
+                return (n, true);
+            }
+            if self.step == 0 {
+                let room = out.get_mut(n..n.saturating_add(START_EVENTS));
+                if let Some(slots) = room.and_then(|r| <&mut [Event; START_EVENTS]>::try_from(r).ok()) {
+                    n += self.write_start(pos, slots);
+                    continue;
+                }
+            }
+            let Some(slot) = out.get_mut(n) else {
+                return (n, false);
+            };
+            match self.next_event(pos) {
+                Some(e) => {
+                    *slot = e;
+                    n += 1;
+                }
+                None => return (n, true),
+            }
+        }
+    }
+
+    /// Writes the pending pass header and the moves of the current start into `slots`; returns
+    /// how many were written. The steps are unrolled, so each event is built in place.
+    #[inline(always)]
+    fn write_start(&mut self, pos: &mut (i64, i64), slots: &mut [Event; START_EVENTS]) -> usize {
+        let mut n = 0;
+        let mut put = |e: Event| {
+            if let Some(slot) = slots.get_mut(n) {
+                *slot = e;
+                n += 1;
+            }
+        };
+        if let Some(h) = self.header.take() {
+            put(Event::Pass(h));
+        }
+        for step in 0..STEPS {
+            if let Some(e) = self.move_at(step).and_then(|m| emit(m, pos)) {
+                put(e);
+            }
+        }
+        self.step = STEPS;
+        n
+    }
+}
+
+/// The most events of one start: a pass header and one move per step.
+pub const START_EVENTS: usize = 1 + STEPS as usize;
+
+/// `m` as an event, updating the machine position; `None` for a move to the current position,
+/// which is not emitted (PRJ.NOOP).
+#[inline(always)]
+fn emit(m: Move, pos: &mut (i64, i64)) -> Option<Event> {
+    if (m.x, m.z) == *pos {
+        return None;
+    }
+    *pos = (m.x, m.z);
+    Some(Event::Move(m))
 }

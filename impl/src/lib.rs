@@ -70,6 +70,8 @@ pub struct Expander<'a> {
     ended: bool,
     /// The stream is over (end of program or after an alarm).
     done: bool,
+    /// An alarm that [`Expander::fill`] met after writing events, returned by the next call.
+    pending: Option<Alarm>,
 }
 
 impl<'a> Expander<'a> {
@@ -81,6 +83,7 @@ impl<'a> Expander<'a> {
             checked: false,
             ended: false,
             done: false,
+            pending: None,
         }
     }
 
@@ -88,6 +91,41 @@ impl<'a> Expander<'a> {
         self.done = true;
         self.cycle = None;
         Some(Err(alarm))
+    }
+
+    /// Writes the next events of the stream into `out` and returns how many: the same events,
+    /// in the same order, as the iterator, for a caller that keeps them in a buffer. A running
+    /// G92/G76/G78 cycle writes whole starts at a time, each event built in place.
+    ///
+    /// Fewer than `out.len()` events (0 included) means the stream ended, or an alarm follows:
+    /// the alarm is returned by the next call as `Err`, after which the stream is over.
+    pub fn fill(&mut self, out: &mut [Event]) -> Result<usize, Alarm> {
+        let mut n = 0;
+        while let Some(rest) = out.get_mut(n..).filter(|r| !r.is_empty()) {
+            if let Some(Running::Thread(c)) = &mut self.cycle {
+                let (written, done) = c.fill(&mut self.machine.pos, rest);
+                n += written;
+                if done {
+                    self.cycle = None;
+                }
+                continue;
+            }
+            match self.next_slow() {
+                None => break,
+                Some(Ok(e)) => {
+                    if let Some(slot) = rest.first_mut() {
+                        *slot = e;
+                        n += 1;
+                    }
+                }
+                Some(Err(a)) if n == 0 => return Err(a),
+                Some(Err(a)) => {
+                    self.pending = Some(a);
+                    break;
+                }
+            }
+        }
+        Ok(n)
     }
 }
 
@@ -114,6 +152,9 @@ impl Expander<'_> {
     /// Every event but the hot path's: the configuration check, blocks, G162, the end.
     #[inline(never)]
     fn next_slow(&mut self) -> Option<Result<Event, Alarm>> {
+        if let Some(a) = self.pending.take() {
+            return Some(Err(a));
+        }
         if self.done {
             return None;
         }

@@ -156,6 +156,7 @@ impl Multi {
     }
 
     /// The header and geometry of rough pass `r` (G76.DEPTH.*, G76.MODE, G78.MODE).
+    #[inline]
     fn rough_pass(&self, r: &Rough) -> (Pass, Cut) {
         let off = match flank(self.code, self.mode, r.n) {
             Flank::Right => self.t(r.depth),
@@ -184,6 +185,7 @@ impl Multi {
     }
 
     /// The pass after the current one, or `None` when the cycle is done.
+    #[inline]
     pub fn advance(&mut self) -> Option<(Pass, Cut)> {
         self.index = self.index.checked_add(1)?;
         if let Some(prev) = self.rough {

@@ -94,22 +94,35 @@ fn clamp(q: &Norm, n: u32, depth: u128, rule: Rule) -> Rough {
 }
 
 /// G76.DEPTH.1: round(√n·Δd), clamped to T. Compared with T before the root is taken:
-/// round(√N) ≥ T ⇔ N > T·(T − 1), so the root is only taken below 2^126.
-fn sqrt_depth(q: &Norm, n: u32) -> Rough {
+/// round(√N) ≥ T ⇔ N > T·(T − 1), so the root is only taken below 2^126. `hint` is a guess
+/// at the root (the previous pass's depth), checked exactly before it is used.
+fn sqrt_depth(q: &Norm, n: u32, hint: u128) -> Rough {
     let big = mul_wide(q.dd * q.dd, u128::from(n)); // n·Δd²
     let limit = q.target * (q.target - 1); // T ≥ 1, T < 2^63
     if big > U256::from_u128(limit) {
         return clamp(q, n, q.target, Rule::G76Depth1);
     }
-    clamp(q, n, root(big.lo), Rule::G76Depth1)
+    clamp(q, n, root(big.lo, hint), Rule::G76Depth1)
 }
 
-/// round(√v), half up (`fixed::sqrt_round`).
-fn root(v: u128) -> u128 {
+/// round(√v), half up (`fixed::sqrt_round`). From one pass to the next the root grows by
+/// Δd·(√n − √(n−1)) ≤ Δd / (2√(n−1)), so for most passes it is `hint` or `hint + 1`: each is
+/// checked exactly (round(√v) = c ⇔ c² − c < v ≤ c² + c) before the root is taken.
+fn root(v: u128, hint: u128) -> u128 {
     if cfg!(feature = "planted-depth-bug") {
         return planted_root(v);
     }
-    sqrt_round(v)
+    let rounds_to = |c: u128| {
+        let (Some(sq), true) = (c.checked_mul(c), c > 0) else { return false };
+        sq - c < v && sq.checked_add(c).is_some_and(|hi| v <= hi)
+    };
+    if rounds_to(hint) {
+        hint
+    } else if rounds_to(hint.saturating_add(1)) {
+        hint + 1
+    } else {
+        sqrt_round(v)
+    }
 }
 
 /// TEST AID, never for production, used only with the feature `planted-depth-bug` (off by
@@ -141,16 +154,18 @@ pub fn first(p: &ScheduleParams) -> Rough {
         // Switch at s = 1: √0·Δd + 1·Δdmin.
         clamp(&q, 1, q.dmin, Rule::G76DepthMin)
     } else {
-        sqrt_depth(&q, 1)
+        sqrt_depth(&q, 1, 0)
     }
 }
 
 /// The rough pass after `prev` (G76.DEPTH.1, G76.DEPTH.MIN, G76.DEPTH.LAST, G78.DEPTHMODE);
 /// `None` when `prev` was the last one (or its number cannot grow).
 ///
-/// Pure in (`p`, `prev`): before the switch the depth is recomputed from n; at and after the
-/// switch pass s the exact depth √(s−1)·Δd + (n − s + 1)·Δdmin is the previous pass's rounded,
-/// unclamped depth plus Δdmin (rounding commutes with adding an integer), so `prev.depth` is used.
+/// Pure in (`p`, `prev`): before the switch the depth is recomputed from n (`prev.depth` only
+/// serves as a checked guess at the root); at and after the switch pass s the exact depth
+/// √(s−1)·Δd + (n − s + 1)·Δdmin is the previous pass's rounded, unclamped depth plus Δdmin
+/// (rounding commutes with adding an integer), so `prev.depth` is used. The switch is
+/// monotone in n: a `prev` named G76.DEPTH.MIN is at or after it, and so is pass n.
 pub fn next(p: &ScheduleParams, prev: &Rough) -> Option<Rough> {
     if prev.last {
         return None;
@@ -160,11 +175,11 @@ pub fn next(p: &ScheduleParams, prev: &Rough) -> Option<Rough> {
     if q.constant {
         return Some(constant_depth(&q, n));
     }
-    if switched(&q, n) {
-        let before = u128::from(prev.depth.max(0).unsigned_abs());
+    let before = u128::from(prev.depth.max(0).unsigned_abs());
+    if prev.rule == Rule::G76DepthMin || switched(&q, n) {
         return Some(clamp(&q, n, before.saturating_add(q.dmin), Rule::G76DepthMin));
     }
-    Some(sqrt_depth(&q, n))
+    Some(sqrt_depth(&q, n, before))
 }
 
 /// The number of rough passes, or `None` when it exceeds `limit` (PRJ.MAXPASS).

@@ -1,15 +1,18 @@
 //! Performance of the production expander (issue: performance, measured against the limit).
 //!
-//! For each case, three measurements over the same trace, all reported as moves per second
-//! (criterion throughput in elements = moves):
-//! - `baseline`: writes the case's events, already computed, into a preallocated buffer — the
-//!   memory-bound limit of producing that many events of that size;
-//! - `impl`: the production expander streaming the program into the same kind of buffer;
+//! For each case, four measurements over the same trace, all reported as events per second
+//! (criterion throughput in elements = events):
+//! - `baseline`: writes the case's events, already computed, one by one into a preallocated
+//!   buffer — the memory-bound limit of producing that many events of that size;
+//! - `impl`: the production expander writing the program's events into the same buffer with
+//!   `Expander::fill` (its batch API);
+//! - `impl_iter`: the production expander as a streaming iterator, each event pushed into a
+//!   preallocated buffer;
 //! - `spec`: the executable reference expanding the program (owned trace).
 //!
 //! After criterion's own output, a table prints each case's figures as ratios (impl / baseline,
-//! impl / spec), the time per move and the time to the first event (latency). The README's table
-//! is copied from that output.
+//! impl / spec), the time per event and the time to the first event (latency). The README's
+//! table is copied from that output.
 
 use criterion::{black_box, BenchmarkId, Criterion, Throughput};
 use cycle_impl::Expander;
@@ -88,19 +91,34 @@ fn events(case: &Case) -> Vec<Event> {
     out
 }
 
-fn impl_into(buffer: &mut Vec<Event>, case: &Case) {
+/// The production expander's batch API: the events written straight into `buffer`.
+fn impl_into(buffer: &mut [Event], case: &Case) {
+    let mut expander = Expander::new(case.program.as_bytes(), case.config);
+    let mut n = 0;
+    while let Some(rest) = buffer.get_mut(n..).filter(|r| !r.is_empty()) {
+        match expander.fill(rest) {
+            Ok(0) => break,
+            Ok(k) => n += k,
+            Err(a) => panic!("bench case {} alarms: {a:?}", case.name),
+        }
+    }
+    black_box(&buffer);
+}
+
+/// The production expander's iterator, each event pushed into a preallocated buffer.
+fn iter_into(buffer: &mut Vec<Event>, case: &Case) {
     buffer.clear();
     for e in Expander::new(case.program.as_bytes(), case.config).flatten() {
         buffer.push(e);
     }
+    black_box(&buffer);
 }
 
 /// The memory-bound limit: the same events, already computed, written one by one into the same
-/// kind of buffer. The compiler may turn this loop into a block copy — that is the limit.
-fn baseline_into(buffer: &mut Vec<Event>, events: &[Event]) {
-    buffer.clear();
-    for e in events {
-        buffer.push(*e);
+/// buffer. The compiler may turn this loop into a block copy — that is the limit.
+fn baseline_into(buffer: &mut [Event], events: &[Event]) {
+    for (slot, e) in buffer.iter_mut().zip(events) {
+        *slot = *e;
     }
     black_box(&buffer);
 }
@@ -111,11 +129,15 @@ fn bench(c: &mut Criterion, cases: &[Case]) {
         let mut group = c.benchmark_group(&case.name);
         group.throughput(Throughput::Elements(events.len() as u64));
         group.sample_size(20).measurement_time(Duration::from_secs(2)).warm_up_time(Duration::from_millis(500));
-        let mut buffer = Vec::with_capacity(events.len());
+        let mut buffer = events.clone();
+        let mut pushed = Vec::with_capacity(events.len());
         group.bench_function(BenchmarkId::from_parameter("baseline"), |b| {
             b.iter(|| baseline_into(&mut buffer, black_box(&events)))
         });
         group.bench_function(BenchmarkId::from_parameter("impl"), |b| b.iter(|| impl_into(&mut buffer, black_box(case))));
+        group.bench_function(BenchmarkId::from_parameter("impl_iter"), |b| {
+            b.iter(|| iter_into(&mut pushed, black_box(case)))
+        });
         group.bench_function(BenchmarkId::from_parameter("spec"), |b| {
             b.iter(|| cycle_spec::expand(black_box(case.program.as_bytes()), &case.config))
         });
@@ -149,17 +171,22 @@ fn median_ns(runs: usize, mut f: impl FnMut()) -> f64 {
     v[runs / 2]
 }
 
-/// The summary table: ratios measured in this run (medians of 15 runs per figure).
+/// The summary table: figures measured in this run (medians of 15 runs per figure).
 fn table(cases: &[Case]) {
     println!("\n## cyclecheck expander figures (this run)\n");
-    println!("| case | events | impl Mev/s | baseline Mev/s | spec Mev/s | impl/baseline | impl/spec | ns/event | first event ns |");
-    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|");
+    println!(
+        "| case | events | impl Mev/s | impl_iter Mev/s | baseline Mev/s | spec Mev/s | impl/baseline | impl/spec | impl_iter/baseline | ns/event | first event ns |"
+    );
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
     for case in cases {
         let events = events(case);
         let n = events.len() as f64;
-        let mut buffer = Vec::with_capacity(events.len());
+        let mut buffer = events.clone();
+        let mut pushed = Vec::with_capacity(events.len());
         let base = median_ns(15, || baseline_into(&mut buffer, black_box(&events)));
         let imp = median_ns(15, || impl_into(&mut buffer, black_box(case)));
+        assert_eq!(buffer, events, "bench case {}: fill wrote other events", case.name);
+        let iter = median_ns(15, || iter_into(&mut pushed, black_box(case)));
         let spec = median_ns(15, || {
             black_box(cycle_spec::expand(black_box(case.program.as_bytes()), &case.config));
         });
@@ -168,14 +195,16 @@ fn table(cases: &[Case]) {
         });
         let rate = |ns: f64| n / ns * 1e3; // events per ns → M events per s
         println!(
-            "| {} | {} | {:.1} | {:.1} | {:.2} | {:.2} | {:.2} | {:.1} | {:.0} |",
+            "| {} | {} | {:.1} | {:.1} | {:.1} | {:.2} | {:.2} | {:.2} | {:.2} | {:.1} | {:.0} |",
             case.name,
             events.len(),
             rate(imp),
+            rate(iter),
             rate(base),
             rate(spec),
             base / imp,
             spec / imp,
+            base / iter,
             imp / n,
             first
         );
