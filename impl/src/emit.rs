@@ -34,11 +34,11 @@ pub struct Path {
     pub rule_pull: Rule,
 }
 
-/// Which passes follow the first.
+/// The passes of a cycle.
 #[derive(Clone, Copy, Debug)]
 pub enum Plan {
-    /// G92: one pass.
-    Single,
+    /// G92: one pass, with its header.
+    Single(Pass),
     /// G76/G78: rough passes from the schedule, then the finishing passes.
     Multi(Multi),
 }
@@ -49,7 +49,8 @@ pub struct Cycle {
     path: Path,
     plan: Plan,
     cut: Cut,
-    header: Option<Pass>,
+    /// The current pass's header is still to be emitted.
+    header: bool,
     start: u32,
     /// The spindle start angle of `start` (COM.MULTISTART), computed once per start.
     angle: u32,
@@ -64,9 +65,29 @@ fn add(p: (i64, i64), d: (i64, i64)) -> (i64, i64) {
 }
 
 impl Cycle {
-    /// A cycle whose first pass has the header `header` and geometry `cut`.
-    pub fn new(path: Path, plan: Plan, header: Pass, cut: Cut) -> Cycle {
-        Cycle { path, plan, cut, header: Some(header), start: 0, angle: 0, step: 0 }
+    /// A cycle whose first pass has the geometry `cut`.
+    pub fn new(path: Path, plan: Plan, cut: Cut) -> Cycle {
+        Cycle { path, plan, cut, header: true, start: 0, angle: 0, step: 0 }
+    }
+
+    /// The header of the current pass, made from the plan's state when it is written (not kept
+    /// in a field written just before: the event is then built from values in registers).
+    #[inline]
+    fn header(&self) -> Event {
+        match &self.plan {
+            Plan::Single(h) => Event::Pass(*h),
+            Plan::Multi(m) => Event::Pass(m.header()),
+        }
+    }
+
+    /// The pending header, if any.
+    #[inline]
+    fn take_header(&mut self) -> Option<Event> {
+        if !self.header {
+            return None;
+        }
+        self.header = false;
+        Some(self.header())
     }
 
     /// Where the cut of the current pass ends, after the pull-out if any.
@@ -110,8 +131,8 @@ impl Cycle {
     #[inline]
     pub fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
         loop {
-            if let Some(h) = self.header.take() {
-                return Some(Event::Pass(h));
+            if let Some(h) = self.take_header() {
+                return Some(h);
             }
             if self.step >= STEPS {
                 if !self.next_start() {
@@ -144,8 +165,8 @@ impl Cycle {
             return false;
         };
         match multi.advance() {
-            Some((header, cut)) => {
-                self.header = Some(header);
+            Some(cut) => {
+                self.header = true;
                 self.cut = cut;
                 true
             }
@@ -195,8 +216,8 @@ impl Cycle {
                 n += 1;
             }
         };
-        if let Some(h) = self.header.take() {
-            put(Event::Pass(h));
+        if let Some(h) = self.take_header() {
+            put(h);
         }
         for step in 0..STEPS {
             if let Some(e) = self.move_at(step).and_then(|m| emit(m, pos)) {

@@ -89,5 +89,5 @@ pub fn cycle(config: &Config, st: &G92State, a: (i64, i64), lead: i64, line: u32
     // Pass header: the X infeed from the start point, |A.x − C.x| on diameter.
     let depth = sat((i128::from(a.0) - i128::from(cx)).abs());
     let header = Pass { index: st.index, kind: PassKind::Rough, diameter_depth: depth, rule: Rule::G92Path };
-    Ok(Cycle::new(path, Plan::Single, header, Cut { p0: (cx, a.1), end: d }))
+    Ok(Cycle::new(path, Plan::Single(header), Cut { p0: (cx, a.1), end: d }))
 }

@@ -155,43 +155,50 @@ impl Multi {
         Cut { p0, end }
     }
 
-    /// The header and geometry of rough pass `r` (G76.DEPTH.*, G76.MODE, G78.MODE).
+    /// The cut of rough pass `r` (G76.DEPTH.*, G76.MODE, G78.MODE).
     #[inline]
-    fn rough_pass(&self, r: &Rough) -> (Pass, Cut) {
+    fn rough_cut(&self, r: &Rough) -> Cut {
         let off = match flank(self.code, self.mode, r.n) {
             Flank::Right => self.t(r.depth),
             Flank::Centre => self.t_target,
             // The mirror of the right flank about the centre.
             Flank::Left => self.t_target.saturating_mul(2).saturating_sub(self.t(r.depth)),
         };
-        let header =
-            Pass { index: self.index, kind: PassKind::Rough, diameter_depth: r.depth.saturating_mul(2), rule: r.rule };
-        (header, self.cut(r.depth, off))
+        self.cut(r.depth, off)
     }
 
-    /// G76.FINISH, G76.FINISH.Z: finishing pass at depth k, at the Z of the last rough pass.
-    fn finish_pass(&self) -> (Pass, Cut) {
-        let kind = if self.finish <= 1 { PassKind::Finish } else { PassKind::Spring };
-        let header = Pass { index: self.index, kind, diameter_depth: self.k.saturating_mul(2), rule: Rule::G76Finish };
-        (header, self.cut(self.k, self.t_target))
+    /// The header of the current pass: a rough pass (G76.DEPTH.*), or a finishing pass at
+    /// depth k (G76.FINISH: the first finishing pass, then spring passes).
+    #[inline]
+    pub fn header(&self) -> Pass {
+        match &self.rough {
+            Some(r) => {
+                Pass { index: self.index, kind: PassKind::Rough, diameter_depth: r.depth.saturating_mul(2), rule: r.rule }
+            }
+            None => {
+                let kind = if self.finish <= 1 { PassKind::Finish } else { PassKind::Spring };
+                Pass { index: self.index, kind, diameter_depth: self.k.saturating_mul(2), rule: Rule::G76Finish }
+            }
+        }
     }
 
-    /// The first pass.
-    fn begin(&mut self) -> (Pass, Cut) {
+    /// The cut of the first pass.
+    fn begin(&mut self) -> Cut {
         let r = schedule::first(&self.sched);
         self.rough = Some(r);
         self.index = 1;
-        self.rough_pass(&r)
+        self.rough_cut(&r)
     }
 
-    /// The pass after the current one, or `None` when the cycle is done.
+    /// Moves on to the pass after the current one and returns its cut, or `None` when the
+    /// cycle is done.
     #[inline]
-    pub fn advance(&mut self) -> Option<(Pass, Cut)> {
+    pub fn advance(&mut self) -> Option<Cut> {
         self.index = self.index.checked_add(1)?;
         if let Some(prev) = self.rough {
             if let Some(r) = schedule::next(&self.sched, &prev) {
                 self.rough = Some(r);
-                return Some(self.rough_pass(&r));
+                return Some(self.rough_cut(&r));
             }
             self.rough = None;
         }
@@ -199,7 +206,8 @@ impl Multi {
             return None;
         }
         self.finish += 1;
-        Some(self.finish_pass())
+        // G76.FINISH.Z: at the Z of the last rough pass.
+        Some(self.cut(self.k, self.t_target))
     }
 }
 
@@ -281,7 +289,7 @@ pub fn cycle(
         t_target: 0,
     };
     multi.t_target = multi.t(target);
-    let (header, cut) = multi.begin();
+    let cut = multi.begin();
     let path = Path {
         a,
         lead: sec.lead,
@@ -291,5 +299,5 @@ pub fn cycle(
         rule_path: Rule::G76Path,
         rule_pull,
     };
-    Ok(Cycle::new(path, Plan::Multi(multi), header, cut))
+    Ok(Cycle::new(path, Plan::Multi(multi), cut))
 }
