@@ -112,10 +112,8 @@ fn root(v: u128, hint: u128) -> u128 {
     if cfg!(feature = "planted-depth-bug") {
         return planted_root(v);
     }
-    let rounds_to = |c: u128| {
-        let (Some(sq), true) = (c.checked_mul(c), c > 0) else { return false };
-        sq - c < v && sq.checked_add(c).is_some_and(|hi| v <= hi)
-    };
+    // c² ≥ c, so c² − c does not underflow.
+    let rounds_to = |c: u128| c.checked_mul(c).is_some_and(|sq| sq - c < v && sq.checked_add(c).is_some_and(|hi| v <= hi));
     if rounds_to(hint) {
         hint
     } else if rounds_to(hint.saturating_add(1)) {
@@ -236,6 +234,39 @@ mod tests {
     extern crate std;
     use super::*;
     use std::vec::Vec;
+
+    /// G76.DEPTH.1: the guess only saves work — any guess gives the exact rounded root, also
+    /// one far from it (the guess is checked, not trusted). Every v ≤ 20 000 with every guess
+    /// up to √v + 3; large v (up to 2^126) with guesses around the root and at the extremes.
+    #[test]
+    #[cfg(not(feature = "planted-depth-bug"))]
+    fn root_with_any_guess_is_the_rounded_root() {
+        for v in 0..=20_000u128 {
+            let exact = sqrt_round(v);
+            for hint in (0..=crate::fixed::isqrt(v) + 3).chain([u128::MAX, 1 << 64, 1 << 100]) {
+                assert_eq!(root(v, hint), exact, "v = {v}, guess {hint}");
+            }
+        }
+        let mut x = 0x9e37_79b9_7f4a_7c15u64;
+        for _ in 0..20_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let v = (u128::from(x) << 62 ^ u128::from(x.rotate_left(17))) >> (x % 64);
+            let exact = sqrt_round(v);
+            for hint in [exact.saturating_sub(2), exact - exact.min(1), exact, exact + 1, exact + 2, 0, u128::MAX] {
+                assert_eq!(root(v, hint), exact, "v = {v}, guess {hint}");
+            }
+        }
+        // The edges of the rounding: r² − r + 1 and r² + r round to r; r² + r + 1 to r + 1.
+        for r in [1u128, 2, 3, 1_000, 1 << 40, (1 << 63) - 1] {
+            for hint in [r - 1, r, r + 1] {
+                assert_eq!(root(r * r - r + 1, hint), r);
+                assert_eq!(root(r * r + r, hint), r);
+                assert_eq!(root(r * r + r + 1, hint), r + 1);
+            }
+        }
+    }
 
     fn all(p: &ScheduleParams) -> Vec<Rough> {
         let mut v = Vec::new();

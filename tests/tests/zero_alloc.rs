@@ -2,7 +2,7 @@
 //! allocator, and this checks it at run time too): a counting global allocator counts the
 //! allocations made on this test's thread while whole programs are expanded.
 
-use cycle_vocab::{Config, Dialect, Grid, Increment, Units};
+use cycle_vocab::{Config, Dialect, Event, Grid, Increment, Move, Rule, Units};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
@@ -34,7 +34,8 @@ unsafe impl GlobalAlloc for Counting {
 #[global_allocator]
 static ALLOCATOR: Counting = Counting;
 
-/// Expands `program` with the production expander and returns (events, alarm?, allocations).
+/// Expands `program` with the production expander's iterator and returns (events, alarm?,
+/// allocations).
 fn expand_counting(program: &[u8], config: Config) -> (u64, bool, u64) {
     let mut events = 0;
     let mut alarmed = false;
@@ -43,6 +44,25 @@ fn expand_counting(program: &[u8], config: Config) -> (u64, bool, u64) {
     for item in cycle_impl::Expander::new(program, config) {
         match item {
             Ok(_) => events += 1,
+            Err(_) => alarmed = true,
+        }
+    }
+    COUNTING.with(|c| c.set(false));
+    (events, alarmed, COUNT.with(|n| n.get()))
+}
+
+/// The same with `Expander::fill` into a buffer of 100 events allocated before counting starts.
+fn fill_counting(program: &[u8], config: Config) -> (u64, bool, u64) {
+    let mut buffer = vec![Event::Move(Move::rapid(0, 0, Rule::PrjTrace)); 100];
+    let mut events = 0;
+    let mut alarmed = false;
+    COUNT.with(|n| n.set(0));
+    COUNTING.with(|c| c.set(true));
+    let mut expander = cycle_impl::Expander::new(program, config);
+    loop {
+        match expander.fill(&mut buffer) {
+            Ok(0) => break,
+            Ok(n) => events += n as u64,
             Err(_) => alarmed = true,
         }
     }
@@ -88,8 +108,10 @@ fn expanding_any_cycle_allocates_nothing() {
     ];
     let mut total_events = 0;
     for (program, config) in programs {
-        let (events, _, allocations) = expand_counting(program.as_bytes(), *config);
+        let (events, alarmed, allocations) = expand_counting(program.as_bytes(), *config);
         assert_eq!(allocations, 0, "the production expander allocated on:\n{program}");
+        let filled = fill_counting(program.as_bytes(), *config);
+        assert_eq!(filled, (events, alarmed, 0), "Expander::fill: (events, alarm, allocations) on:\n{program}");
         total_events += events;
     }
     assert!(total_events > 10_000, "the programs must exercise the expander ({total_events} events)");
