@@ -3,7 +3,8 @@
 //!
 //! `no_std`, no heap, no floating point, no `unsafe`, no panics: [`Expander`] is a streaming
 //! iterator over the trace events of a program (PRJ.TRACE), computed on the integer grid with
-//! exact fixed-point arithmetic ([`fixed`]). The rules and every interpretation are those of
+//! exact fixed-point arithmetic ([`fixed`]); [`Expander::fill`] writes the same stream into a
+//! caller's buffer, a whole start of a cycle at a time. The rules and every interpretation are those of
 //! `docs/RULES.md` and `docs/INTERPRETATION.md`; each rule-implementing function cites its ID.
 //!
 //! Modules: [`schedule`] (rough-pass depths), [`fixed`] (exact integer helpers and the tangent
