@@ -95,10 +95,7 @@ pub fn corpus_step() -> Step {
 /// Step 2: `cases` cases of `gen::any_case()` from a fixed seed.
 pub fn campaign_step(cases: u32, seed: u64) -> Step {
     step("campaign", || {
-        let mut bytes = [0u8; 32];
-        for (i, chunk) in bytes.chunks_mut(8).enumerate() {
-            chunk.copy_from_slice(&(seed.rotate_left(16 * i as u32) ^ i as u64).to_le_bytes());
-        }
+        let bytes = gen::seed_bytes(seed);
         let mut runner = TestRunner::new_with_rng(PtConfig::default(), TestRng::from_seed(RngAlgorithm::ChaCha, &bytes));
         let strategy = gen::any_case();
         let cases = (0..cases).filter_map(|i| {

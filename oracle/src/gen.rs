@@ -55,6 +55,16 @@ impl fmt::Debug for Case {
     }
 }
 
+/// The 32-byte ChaCha seed of a campaign from a `u64` (`CYCLECHECK_SEED`, `--seed`): the same
+/// expansion everywhere, so one number names one run.
+pub fn seed_bytes(seed: u64) -> [u8; 32] {
+    let mut bytes = [0u8; 32];
+    for (i, chunk) in bytes.chunks_mut(8).enumerate() {
+        chunk.copy_from_slice(&(seed.rotate_left(16 * i as u32) ^ i as u64).to_le_bytes());
+    }
+    bytes
+}
+
 /// How many knobs a structured case draws from.
 pub const KNOBS: usize = 256;
 

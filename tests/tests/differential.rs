@@ -32,11 +32,7 @@ fn cases(default: u32) -> u32 {
 /// The RNG seed: `CYCLECHECK_SEED` (u64), else a fixed one.
 fn seed() -> [u8; 32] {
     let s: u64 = std::env::var("CYCLECHECK_SEED").ok().and_then(|v| v.trim().parse().ok()).unwrap_or(0x5eed_c7c1_e0ac_1e00);
-    let mut bytes = [0u8; 32];
-    for (i, chunk) in bytes.chunks_mut(8).enumerate() {
-        chunk.copy_from_slice(&(s.rotate_left(16 * i as u32) ^ i as u64).to_le_bytes());
-    }
-    bytes
+    gen::seed_bytes(s)
 }
 
 /// One case: both engines, then the relation. The failure message is the divergence and the

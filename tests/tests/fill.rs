@@ -89,11 +89,7 @@ fn cases() -> u32 {
 
 fn seed() -> [u8; 32] {
     let s: u64 = std::env::var("CYCLECHECK_SEED").ok().and_then(|v| v.trim().parse().ok()).unwrap_or(0xf111_0000_5eed);
-    let mut bytes = [0u8; 32];
-    for (i, chunk) in bytes.chunks_mut(8).enumerate() {
-        chunk.copy_from_slice(&(s.rotate_left(16 * i as u32) ^ i as u64).to_le_bytes());
-    }
-    bytes
+    gen::seed_bytes(s)
 }
 
 #[test]

@@ -387,14 +387,6 @@ fn family_seed(seed: u64, family: u64) -> u64 {
     seed ^ family.wrapping_mul(0x9e37_79b9_7f4a_7c15)
 }
 
-fn seed_bytes(s: u64) -> [u8; 32] {
-    let mut bytes = [0u8; 32];
-    for (i, chunk) in bytes.chunks_mut(8).enumerate() {
-        chunk.copy_from_slice(&(s.rotate_left(16 * i as u32) ^ i as u64).to_le_bytes());
-    }
-    bytes
-}
-
 /// The generated families of a run: name, strategy, cases to draw.
 fn families(options: &Options) -> Vec<(&'static str, BoxedStrategy<gen::Case>, u32)> {
     let mut f = Vec::new();
@@ -435,7 +427,7 @@ fn case_list(options: &Options) -> (Vec<Pending>, Vec<FamilyRun>) {
     for (number, (family, strategy, count)) in families(options).into_iter().enumerate() {
         let seed = family_seed(options.seed, number as u64 + 1);
         let config = ProptestConfig { cases: count, failure_persistence: None, ..ProptestConfig::default() };
-        let mut runner = TestRunner::new_with_rng(config, TestRng::from_seed(RngAlgorithm::ChaCha, &seed_bytes(seed)));
+        let mut runner = TestRunner::new_with_rng(config, TestRng::from_seed(RngAlgorithm::ChaCha, &gen::seed_bytes(seed)));
         let mut kept = 0;
         for index in 0..count {
             let Ok(tree) = strategy.new_tree(&mut runner) else { continue };
