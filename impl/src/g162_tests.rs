@@ -3,7 +3,7 @@
 //! fuzzing of the new codes.
 extern crate std;
 
-use crate::tests::{expand, gcode, grid_of_round, xorshift};
+use crate::tests::{expand, gcode, grid_of_round, moves, passes, xorshift};
 use cycle_vocab::text::Trace;
 use cycle_vocab::{
     Alarm, AlarmCode, Config, Dialect, Event, Grid, Increment, Move, MoveKind, Params, Pass, PassKind, Rule, Units,
@@ -20,28 +20,8 @@ fn with_params(params: Params) -> Config {
     Config { params, ..nc201() }
 }
 
-fn moves(t: &Trace) -> Vec<Move> {
-    t.moves().copied().collect()
-}
-
 fn depths(t: &Trace) -> Vec<i64> {
-    t.events
-        .iter()
-        .filter_map(|e| match e {
-            Event::Pass(p) => Some(p.diameter_depth / 2),
-            Event::Move(_) => None,
-        })
-        .collect()
-}
-
-fn headers(t: &Trace) -> Vec<Pass> {
-    t.events
-        .iter()
-        .filter_map(|e| match e {
-            Event::Pass(p) => Some(*p),
-            Event::Move(_) => None,
-        })
-        .collect()
+    passes(t).iter().map(|p| p.diameter_depth / 2).collect()
 }
 
 fn threads(t: &Trace) -> Vec<Move> {
@@ -81,7 +61,7 @@ fn worked_example() {
     assert_eq!(last[0], Move::feed(21_600, 5_000, h, Rule::G162Path));
     assert_eq!(last[1], Move::thread(21_600, -18_000, 15_000, 0, Rule::G162F));
     assert_eq!(last[2], Move::feed(25_600, -20_000, h, Rule::G162V));
-    let hs = headers(&t);
+    let hs = passes(&t);
     assert!(hs.iter().all(|p| p.kind == PassKind::Rough));
     assert_eq!(hs.iter().map(|p| p.rule).collect::<Vec<_>>()[1..3], [Rule::G162Pq, Rule::G162Split]);
     assert_eq!(hs.iter().map(|p| p.index).collect::<Vec<_>>(), [1, 2, 3, 4, 5, 6]);
@@ -120,7 +100,7 @@ fn manual_cone() {
 fn single_pass() {
     let t = expand("G0 X30 Z5\nG162 X23 Z-20 H500 F1.5\n", nc201());
     assert_eq!(t.alarm, None);
-    assert_eq!(headers(&t), [Pass { index: 1, kind: PassKind::Rough, diameter_depth: 0, rule: Rule::G162X }]);
+    assert_eq!(passes(&t), [Pass { index: 1, kind: PassKind::Rough, diameter_depth: 0, rule: Rule::G162X }]);
     let h = 5_000_000;
     assert_eq!(
         moves(&t)[1..],
@@ -377,7 +357,7 @@ fn thread_moves() {
     // G32 ends a G92 run: the next G92 starts a new run (R and end point reset).
     let t = expand("G0 X40 Z5\nG92 X30 Z-10 F1 R-1\nG32 X40 Z5\nG92 X30 Z-10\n", c);
     assert_eq!(t.alarm, None);
-    let p = headers(&t);
+    let p = passes(&t);
     assert_eq!(p.iter().map(|p| (p.index, p.diameter_depth)).collect::<Vec<_>>(), [(1, 12_000), (1, 10_000)]);
 }
 

@@ -64,11 +64,11 @@ fn alarm(code: AlarmCode, word: Option<u8>, rule: Rule, line: u32) -> Option<Ala
     Some(Alarm::new(code, word, rule, line))
 }
 
-fn moves(t: &Trace) -> Vec<Move> {
+pub fn moves(t: &Trace) -> Vec<Move> {
     t.moves().copied().collect()
 }
 
-fn passes(t: &Trace) -> Vec<Pass> {
+pub fn passes(t: &Trace) -> Vec<Pass> {
     t.events
         .iter()
         .filter_map(|e| match e {
