@@ -73,8 +73,11 @@ pub fn div_round(num: u128, den: u128) -> u128 {
     if den == 0 {
         return 0;
     }
-    let q = num / den;
-    let r = num % den;
+    // Both within 64 bits (every division of legal words): one hardware division.
+    let (q, r) = match (u64::try_from(num), u64::try_from(den)) {
+        (Ok(n), Ok(d)) => (u128::from(n / d), u128::from(n % d)),
+        _ => (num / den, num % den),
+    };
     // r < den; the quotient rounds up when 2r ≥ den, written without overflow.
     if r >= den - r {
         q + 1
@@ -383,6 +386,15 @@ mod tests {
         assert_eq!(div_round_signed(-5, 2), -3);
         assert_eq!(div_round_signed(5, -2), -3);
         assert_eq!(div_round_signed(-4, 3), -1);
+        // Across the 64-bit fast path's edges: each side, and a numerator or a denominator
+        // just beyond 64 bits.
+        let big = u128::from(u64::MAX);
+        assert_eq!(div_round(big, 2), big / 2 + 1);
+        assert_eq!(div_round(big + 1, 2), 1 << 63);
+        assert_eq!(div_round(big + 3, big + 1), 1);
+        assert_eq!(div_round((big + 1) * 3 + big / 2 + 1, big + 1), 4);
+        assert_eq!(div_round(3 * big + big / 2, big), 3);
+        assert_eq!(div_round(3 * big + big / 2 + 1, big), 4);
     }
 
     #[test]

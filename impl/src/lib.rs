@@ -37,34 +37,18 @@ pub mod schedule;
 mod thread_move;
 mod words;
 
-use cycle_vocab::{Alarm, Blocks, Config, Event};
+use cycle_vocab::{Alarm, Block, Blocks, Config, Event};
 use modal::{Action, Machine};
-
-/// The cycle being expanded.
-// No heap: the cycle state lives in the expander; boxing is not an option.
-#[allow(clippy::large_enum_variant)]
-enum Running {
-    /// G92, G76, G78.
-    Thread(emit::Cycle),
-    /// G162.
-    G162(g162::Cycle),
-}
-
-impl Running {
-    fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
-        match self {
-            Running::Thread(c) => c.next_event(pos),
-            Running::G162(c) => c.next_event(pos),
-        }
-    }
-}
 
 /// Streaming expansion of a program: one trace event per call of `next`, the alarm last.
 pub struct Expander<'a> {
     blocks: Blocks<'a>,
+    /// The block being read, built in place by the lexer.
+    block: Block,
     machine: Machine,
-    /// The cycle being expanded, if any.
-    cycle: Option<Running>,
+    /// What the last block asked for while it is carried out: a running cycle, a move not yet
+    /// returned, or nothing. The block interpreter writes it in place.
+    action: Action,
     /// The configuration has been checked.
     checked: bool,
     /// M02/M30 was read: nothing after that block.
@@ -79,8 +63,9 @@ impl<'a> Expander<'a> {
     pub fn new(program: &'a [u8], config: Config) -> Expander<'a> {
         Expander {
             blocks: Blocks::new(program),
+            block: Block::new(),
             machine: Machine::new(config),
-            cycle: None,
+            action: Action::Nothing,
             checked: false,
             ended: false,
             done: false,
@@ -90,7 +75,7 @@ impl<'a> Expander<'a> {
 
     fn fail(&mut self, alarm: Alarm) -> Option<Result<Event, Alarm>> {
         self.done = true;
-        self.cycle = None;
+        self.action = Action::Nothing;
         Some(Err(alarm))
     }
 
@@ -103,11 +88,11 @@ impl<'a> Expander<'a> {
     pub fn fill(&mut self, out: &mut [Event]) -> Result<usize, Alarm> {
         let mut n = 0;
         while let Some(rest) = out.get_mut(n..).filter(|r| !r.is_empty()) {
-            if let Some(Running::Thread(c)) = &mut self.cycle {
+            if let Action::Cycle(c) = &mut self.action {
                 let (written, done) = c.fill(&mut self.machine.pos, rest);
                 n += written;
                 if done {
-                    self.cycle = None;
+                    self.action = Action::Nothing;
                 }
                 continue;
             }
@@ -138,12 +123,12 @@ impl Iterator for Expander<'_> {
     /// everything else is [`Expander::next_slow`].
     #[inline]
     fn next(&mut self) -> Option<Self::Item> {
-        if let Some(Running::Thread(c)) = &mut self.cycle {
+        if let Action::Cycle(c) = &mut self.action {
             if let Some(e) = c.next_event(&mut self.machine.pos) {
                 return Some(Ok(e));
             }
             // The cycle is done (a cycle is not fused: it must not be asked again).
-            self.cycle = None;
+            self.action = Action::Nothing;
         }
         self.next_slow()
     }
@@ -166,41 +151,40 @@ impl Expander<'_> {
             }
         }
         loop {
-            if let Some(cycle) = &mut self.cycle {
-                if let Some(e) = cycle.next_event(&mut self.machine.pos) {
-                    return Some(Ok(e));
+            let pos = &mut self.machine.pos;
+            let event = match &mut self.action {
+                Action::Nothing => None,
+                Action::Cycle(c) => c.next_event(pos),
+                Action::G162(c) => c.next_event(pos),
+                Action::Move(m) => {
+                    let m = *m;
+                    self.action = Action::Nothing;
+                    // PRJ.NOOP: a move to the current position is not emitted.
+                    ((m.x, m.z) != *pos).then(|| {
+                        *pos = (m.x, m.z);
+                        Event::Move(m)
+                    })
                 }
-                self.cycle = None;
+            };
+            if let Some(e) = event {
+                return Some(Ok(e));
             }
+            self.action = Action::Nothing;
             if self.ended {
                 self.done = true;
                 return None;
             }
-            let block = match self.blocks.next() {
-                None => {
+            match self.blocks.read(&mut self.block) {
+                Ok(true) => {}
+                Ok(false) => {
                     self.done = true;
                     return None;
                 }
-                Some(Err(a)) => return self.fail(a),
-                Some(Ok(b)) => b,
-            };
-            match self.machine.block(&block) {
                 Err(a) => return self.fail(a),
-                Ok((action, end)) => {
-                    self.ended = end;
-                    match action {
-                        Action::Nothing => {}
-                        Action::Cycle(c) => self.cycle = Some(Running::Thread(c)),
-                        Action::G162(c) => self.cycle = Some(Running::G162(c)),
-                        Action::Move(m) => {
-                            // PRJ.NOOP: a move to the current position is not emitted.
-                            if (m.x, m.z) != self.machine.pos {
-                                self.machine.pos = (m.x, m.z);
-                                return Some(Ok(Event::Move(m)));
-                            }
-                        }
-                    }
-                }
+            }
+            match self.machine.block(&self.block, &mut self.action) {
+                Ok(end) => self.ended = end,
+                Err(a) => return self.fail(a),
             }
         }
     }

@@ -13,7 +13,7 @@ use crate::words::{
     infeed_angle, integer_in, lead_f, lead_i, length_in, scaled_in, signed_length, signed_lead, At, MAX_G92_JK,
 };
 use cycle_vocab::params::MAX_LENGTH;
-use cycle_vocab::{Alarm, AlarmCode, Block, Config, Dialect, Move, Number, Rule, Units};
+use cycle_vocab::{letter_bit, letter_mask, Alarm, AlarmCode, Block, Config, Dialect, Move, Number, Rule, Units};
 
 /// The modal motion mode.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -90,23 +90,23 @@ struct Vals {
 }
 
 /// Words every block accepts (no motion effect).
-const COMMON: &[u8] = b"MNOST";
+const COMMON: u32 = letter_mask(b"MNOST");
 
 /// PRJ.WORD, PRJ.DIALECT: the words a block of `kind` accepts besides G and [`COMMON`].
-fn allowed(kind: Kind, dialect: Dialect) -> &'static [u8] {
+fn allowed(kind: Kind, dialect: Dialect) -> u32 {
     match (kind, dialect) {
         // NC201.ABSINC: U and W are no incremental addresses under nc201.
-        (Kind::Rapid | Kind::Feed, Dialect::Nc201) => b"FXZ",
-        (Kind::Rapid | Kind::Feed, _) => b"FUWXZ",
-        (Kind::Thread(ThreadCode::G32), _) => b"FIUWXZ",
-        (Kind::Thread(ThreadCode::G33), _) => b"FIPUWXZ",
-        (Kind::Thread(ThreadCode::G34), _) => b"FIKUWXZ",
-        (Kind::G162, _) => b"ABFHIJPQVWXZ",
-        (Kind::G92, _) => b"FIJKLRUWXZ",
-        (Kind::First(_), Dialect::Fanuc) => b"PQR",
-        (Kind::First(_), Dialect::Gsk | Dialect::Nc201) => b"DELPQR",
-        (Kind::Second(_), Dialect::Fanuc) => b"FIPQRUWXZ",
-        (Kind::Second(_), Dialect::Gsk | Dialect::Nc201) => b"FIJKPQRUWXZ",
+        (Kind::Rapid | Kind::Feed, Dialect::Nc201) => const { letter_mask(b"FXZ") },
+        (Kind::Rapid | Kind::Feed, _) => const { letter_mask(b"FUWXZ") },
+        (Kind::Thread(ThreadCode::G32), _) => const { letter_mask(b"FIUWXZ") },
+        (Kind::Thread(ThreadCode::G33), _) => const { letter_mask(b"FIPUWXZ") },
+        (Kind::Thread(ThreadCode::G34), _) => const { letter_mask(b"FIKUWXZ") },
+        (Kind::G162, _) => const { letter_mask(b"ABFHIJPQVWXZ") },
+        (Kind::G92, _) => const { letter_mask(b"FIJKLRUWXZ") },
+        (Kind::First(_), Dialect::Fanuc) => const { letter_mask(b"PQR") },
+        (Kind::First(_), Dialect::Gsk | Dialect::Nc201) => const { letter_mask(b"DELPQR") },
+        (Kind::Second(_), Dialect::Fanuc) => const { letter_mask(b"FIPQRUWXZ") },
+        (Kind::Second(_), Dialect::Gsk | Dialect::Nc201) => const { letter_mask(b"FIJKPQRUWXZ") },
     }
 }
 
@@ -127,8 +127,10 @@ impl Machine {
         }
     }
 
-    /// Reads one block; returns its action and whether it ends the program (M02, M30).
-    pub fn block(&mut self, b: &Block) -> Result<(Action, bool), Alarm> {
+    /// Reads one block: writes what it asks of the expander into `action` (in place: a cycle
+    /// is not copied on its way out) and returns whether it ends the program (M02, M30).
+    pub fn block(&mut self, b: &Block, action: &mut Action) -> Result<bool, Alarm> {
+        *action = Action::Nothing;
         let line = b.line;
         let at = |letter: u8| At { letter, line };
         let (motion, end, absinc) = self.codes(b)?;
@@ -172,10 +174,11 @@ impl Machine {
             },
         };
         // (2) allowed words, alphabetically.
-        let ok = allowed(kind, self.config.dialect);
-        if let Some(l) = b.letters().find(|l| !ok.contains(l) && !COMMON.contains(l)) {
+        let refused = b.mask() & !(allowed(kind, self.config.dialect) | COMMON);
+        if refused != 0 {
+            let l = b'A' + refused.trailing_zeros() as u8; // the first alphabetically
             // A GSK word that F76.FORMAT leaves out is refused by that format; any other by PRJ.WORD.
-            let gsk_only = allowed(kind, Dialect::Gsk).contains(&l);
+            let gsk_only = allowed(kind, Dialect::Gsk) & letter_bit(l) != 0;
             let rule = if self.config.dialect == Dialect::Fanuc && gsk_only { Rule::F76Format } else { Rule::PrjWord };
             return Err(at(l).alarm(AlarmCode::WordNotAllowed, rule));
         }
@@ -187,18 +190,15 @@ impl Machine {
             }
         }
         // (4), (5) and the action.
-        let action = match kind {
-            Kind::Rapid | Kind::Feed => self.linear(kind, motion.is_some(), &v, axis, line)?,
-            Kind::G92 => self.g92(motion.is_some(), &v, axis, line)?,
-            Kind::First(code) => {
-                self.first(code, &v);
-                Action::Nothing
-            }
-            Kind::Second(code) => self.second(code, &v, line)?,
-            Kind::Thread(code) => self.thread(code, motion.is_some(), &v, axis, line)?,
-            Kind::G162 => self.g162(&v, line)?,
-        };
-        Ok((action, end))
+        match kind {
+            Kind::Rapid | Kind::Feed => self.linear(kind, motion.is_some(), &v, axis, line, action)?,
+            Kind::G92 => self.g92(motion.is_some(), &v, axis, line, action)?,
+            Kind::First(code) => self.first(code, &v),
+            Kind::Second(code) => self.second(code, &v, line, action)?,
+            Kind::Thread(code) => self.thread(code, motion.is_some(), &v, axis, line, action)?,
+            Kind::G162 => self.g162(&v, line, action)?,
+        }
+        Ok(end)
     }
 
     /// (2) PRJ.SUPPORTED, PRJ.DIALECT, COM.UNITS, PRJ.WORD, NC201.ABSINC: the G codes in the
@@ -376,7 +376,15 @@ impl Machine {
     }
 
     /// PRJ.MODAL: G00 / G01 blocks (and non-motion blocks in those modes).
-    fn linear(&mut self, kind: Kind, coded: bool, v: &Vals, axis: bool, line: u32) -> Result<Action, Alarm> {
+    fn linear(
+        &mut self,
+        kind: Kind,
+        coded: bool,
+        v: &Vals,
+        axis: bool,
+        line: u32,
+        action: &mut Action,
+    ) -> Result<(), Alarm> {
         if let Some(f) = v.lead {
             self.feed = Some(f);
         }
@@ -384,7 +392,7 @@ impl Machine {
             self.mode = if kind == Kind::Feed { Mode::Feed } else { Mode::Rapid };
         }
         if !axis {
-            return Ok(Action::Nothing);
+            return Ok(());
         }
         let (x, z) = if self.config.dialect == Dialect::Nc201 {
             self.nc201_end_point(v, self.pos)
@@ -396,13 +404,15 @@ impl Machine {
             let Some(f) = self.feed else {
                 return Err(Alarm::new(AlarmCode::MissingWord, Some(b'F'), Rule::ComLead, line));
             };
-            return Ok(Action::Move(Move::feed(x, z, f, Rule::PrjModal)));
+            *action = Action::Move(Move::feed(x, z, f, Rule::PrjModal));
+            return Ok(());
         }
-        Ok(Action::Move(Move::rapid(x, z, Rule::PrjModal)))
+        *action = Action::Move(Move::rapid(x, z, Rule::PrjModal));
+        Ok(())
     }
 
     /// G92.MODAL, G92.FORMAT: a block in G92 mode or with G92.
-    fn g92(&mut self, coded: bool, v: &Vals, axis: bool, line: u32) -> Result<Action, Alarm> {
+    fn g92(&mut self, coded: bool, v: &Vals, axis: bool, line: u32, action: &mut Action) -> Result<(), Alarm> {
         if coded && self.mode != Mode::G92 {
             self.g92.new_run(self.pos);
         }
@@ -424,7 +434,7 @@ impl Machine {
             st.starts = u32::try_from(l).unwrap_or(1);
         }
         if !axis {
-            return Ok(Action::Nothing);
+            return Ok(());
         }
         // G92.MODAL: an omitted end coordinate is the run's.
         st.end = Self::end_point(v, self.pos, st.end);
@@ -434,7 +444,11 @@ impl Machine {
         };
         st.index = st.index.saturating_add(1);
         let st = *st;
-        Ok(Action::Cycle(g92::cycle(&self.config, &st, self.pos, lead, line)?))
+        match g92::cycle(&self.config, &st, self.pos, lead, line) {
+            Ok(c) => *action = Action::Cycle(c),
+            Err(a) => return Err(a),
+        }
+        Ok(())
     }
 
     /// G76.FORMAT: a first block replaces the kept values of its code; omitted words fall back
@@ -476,7 +490,7 @@ impl Machine {
     }
 
     /// G76.FORMAT, G76.REQUIRED: a second block, (4) missing words — lead, P, Q — then the cycle.
-    fn second(&mut self, code: Code, v: &Vals, line: u32) -> Result<Action, Alarm> {
+    fn second(&mut self, code: Code, v: &Vals, line: u32, action: &mut Action) -> Result<(), Alarm> {
         if let Some(f) = v.lead {
             self.feed = Some(f);
         }
@@ -497,7 +511,11 @@ impl Machine {
             Code::G76 => &self.g76,
             Code::G78 => &self.g78,
         };
-        Ok(Action::Cycle(multipass::cycle(&self.config, code, first, self.pos, &sec, line)?))
+        match multipass::cycle(&self.config, code, first, self.pos, &sec, line) {
+            Ok(c) => *action = Action::Cycle(c),
+            Err(a) => return Err(a),
+        }
+        Ok(())
     }
 
     /// (3) One word of a G162 block (docs/INTERPRETATION.md, "Block and words"): the word
@@ -527,7 +545,15 @@ impl Machine {
 
     /// G32, G33, G34 (PRJ.MODAL, M003): modal thread moves. (4) a block with axis words needs a
     /// lead (COM.LEAD), G34 its K (G34); (5) the G34 lead bound; then one thread move.
-    fn thread(&mut self, code: ThreadCode, coded: bool, v: &Vals, axis: bool, line: u32) -> Result<Action, Alarm> {
+    fn thread(
+        &mut self,
+        code: ThreadCode,
+        coded: bool,
+        v: &Vals,
+        axis: bool,
+        line: u32,
+        action: &mut Action,
+    ) -> Result<(), Alarm> {
         if let Some(f) = v.lead {
             self.feed = Some(f);
         }
@@ -535,7 +561,7 @@ impl Machine {
             self.mode = Mode::Thread(code);
         }
         if !axis {
-            return Ok(Action::Nothing);
+            return Ok(());
         }
         let missing = |word: u8, rule: Rule| Alarm::new(AlarmCode::MissingWord, Some(word), rule, line);
         let lead = self.feed.ok_or(missing(b'F', Rule::ComLead))?;
@@ -547,13 +573,14 @@ impl Machine {
         let p = v.p.and_then(|p| u32::try_from(p).ok()).unwrap_or(0);
         let to = Self::end_point(v, self.pos, self.pos);
         let words = ThreadWords { lead, p, k };
-        Ok(Action::Move(thread_move(code, self.pos, to, &words, self.config.grid, line)?))
+        *action = Action::Move(thread_move(code, self.pos, to, &words, self.config.grid, line)?);
+        Ok(())
     }
 
     /// G162.FORMAT: (4) missing words — F (G162.F), H (G162.H), P/Q as a pair (G162.PQ), X, Z
     /// (G162.FORMAT) — then the cycle's checks and the cycle. F sets the modal feed; without F
     /// the modal feed is the lead whatever it was set for (G162.F).
-    fn g162(&mut self, v: &Vals, line: u32) -> Result<Action, Alarm> {
+    fn g162(&mut self, v: &Vals, line: u32, action: &mut Action) -> Result<(), Alarm> {
         if let Some(f) = v.lead {
             self.feed = Some(f);
         }
@@ -584,6 +611,10 @@ impl Machine {
             // G162.J: omitted → one revolution.
             j: angle(v.j, 360_000),
         };
-        Ok(Action::G162(g162::cycle(&self.config, &words, self.pos, line)?))
+        match g162::cycle(&self.config, &words, self.pos, line) {
+            Ok(c) => *action = Action::G162(c),
+            Err(a) => return Err(a),
+        }
+        Ok(())
     }
 }

@@ -20,58 +20,126 @@ pub const MAX_DIGITS: u32 = 18;
 pub struct Block {
     /// 1-based line of the block's first word.
     pub line: u32,
-    words: [Option<Number>; 26],
+    /// The letters (not G) with a word: bit `l − 'A'` for letter `l` ([`letter_bit`]).
+    present: u32,
+    /// The word at each letter; [`ZERO`] where absent.
+    words: [Number; 26],
     g: [Number; MAX_G_WORDS],
     g_count: u8,
 }
 
+const ZERO: Number = Number { negative: false, mantissa: 0, decimals: 0, point: false };
+
+/// The bit of an address letter (upper case) in a letter mask ([`Block::mask`]); 0 for a byte
+/// that is no upper-case letter.
+pub const fn letter_bit(letter: u8) -> u32 {
+    if letter.is_ascii_uppercase() {
+        1 << (letter - b'A')
+    } else {
+        0
+    }
+}
+
+/// The mask of a set of address letters (upper case).
+pub const fn letter_mask(letters: &[u8]) -> u32 {
+    let mut mask = 0;
+    let mut i = 0;
+    while i < letters.len() {
+        mask |= letter_bit(letters[i]);
+        i += 1;
+    }
+    mask
+}
+
 impl Block {
-    fn new(line: u32) -> Block {
-        let zero = Number { negative: false, mantissa: 0, decimals: 0, point: false };
-        Block { line, words: [None; 26], g: [zero; MAX_G_WORDS], g_count: 0 }
+    /// An empty block; [`Blocks::read`] fills it.
+    pub const fn new() -> Block {
+        Block { line: 0, present: 0, words: [ZERO; 26], g: [ZERO; MAX_G_WORDS], g_count: 0 }
+    }
+
+    /// Empties the block for reuse: only the words present are reset, so that it equals a new
+    /// block.
+    fn clear(&mut self, line: u32) {
+        let mut present = self.present;
+        while present != 0 {
+            if let Some(w) = self.words.get_mut(present.trailing_zeros() as usize) {
+                *w = ZERO;
+            }
+            present &= present - 1;
+        }
+        self.present = 0;
+        for g in self.g.iter_mut().take(self.g_count as usize) {
+            *g = ZERO;
+        }
+        self.g_count = 0;
+        self.line = line;
     }
 
     /// The word at `letter` (upper case, not G).
     pub fn get(&self, letter: u8) -> Option<Number> {
         debug_assert!(letter.is_ascii_uppercase() && letter != b'G');
-        self.words.get(letter.wrapping_sub(b'A') as usize).copied().flatten()
+        if !self.has(letter) {
+            return None;
+        }
+        self.words.get(letter.wrapping_sub(b'A') as usize).copied()
     }
 
     /// Whether the block has a word at `letter` (upper case, not G).
     pub fn has(&self, letter: u8) -> bool {
-        self.get(letter).is_some()
+        self.present & letter_bit(letter) != 0
+    }
+
+    /// The letters (not G) present, as a [`letter_mask`].
+    pub fn mask(&self) -> u32 {
+        self.present
     }
 
     /// The G words, in the order written.
     pub fn g_codes(&self) -> &[Number] {
-        &self.g[..self.g_count as usize]
+        self.g.get(..self.g_count as usize).unwrap_or(&[])
     }
 
     /// The letters (not G) present, in alphabetical order — the order in which engines check
     /// words (docs/INTERPRETATION.md, check order).
     pub fn letters(&self) -> impl Iterator<Item = u8> + '_ {
-        (b'A'..=b'Z').filter(move |&l| l != b'G' && self.has(l))
+        let mut rest = self.present;
+        core::iter::from_fn(move || {
+            let bit = rest.trailing_zeros();
+            rest &= rest.wrapping_sub(1);
+            (bit < 26).then_some(b'A' + bit as u8)
+        })
     }
 
     fn is_empty(&self) -> bool {
-        self.g_count == 0 && self.words.iter().all(Option::is_none)
+        self.g_count == 0 && self.present == 0
     }
 
     fn push(&mut self, letter: u8, value: Number, line: u32) -> Result<(), Alarm> {
+        if self.is_empty() {
+            self.line = line;
+        }
         if letter == b'G' {
-            if self.g_count as usize == MAX_G_WORDS {
+            let Some(slot) = self.g.get_mut(self.g_count as usize) else {
                 return Err(Alarm::new(AlarmCode::DuplicateWord, Some(b'G'), Rule::PrjWord, line));
-            }
-            self.g[self.g_count as usize] = value;
+            };
+            *slot = value;
             self.g_count += 1;
             return Ok(());
         }
-        let slot = &mut self.words[(letter - b'A') as usize];
-        if slot.is_some() {
+        if self.has(letter) {
             return Err(Alarm::new(AlarmCode::DuplicateWord, Some(letter), Rule::PrjWord, line));
         }
-        *slot = Some(value);
+        if let Some(slot) = self.words.get_mut((letter - b'A') as usize) {
+            *slot = value;
+            self.present |= letter_bit(letter);
+        }
         Ok(())
+    }
+}
+
+impl Default for Block {
+    fn default() -> Block {
+        Block::new()
     }
 }
 
@@ -155,23 +223,35 @@ impl<'a> Blocks<'a> {
         Err(Alarm::new(AlarmCode::UnclosedComment, Some(b'('), Rule::PrjLex, open_line))
     }
 
-    fn block(&mut self) -> Result<Option<Block>, Alarm> {
-        let mut block: Option<Block> = None;
+    /// Reads the next block into `block` (its old words are cleared); `false` at the end of
+    /// the program. The block is the caller's, so a reader that keeps one (the production
+    /// expander) builds each block in place.
+    pub fn read(&mut self, block: &mut Block) -> Result<bool, Alarm> {
+        if self.done {
+            return Ok(false);
+        }
+        block.clear(self.line);
+        let read = self.block(block);
+        self.done = !matches!(read, Ok(true));
+        read
+    }
+
+    /// Reads words into `block` up to the end of a non-empty block; `false` when the program
+    /// ends before a word.
+    fn block(&mut self, block: &mut Block) -> Result<bool, Alarm> {
         loop {
             self.skip_blanks();
             let Some(b) = self.peek() else {
-                return Ok(block);
+                return Ok(!block.is_empty());
             };
             match b {
                 b'\n' | b';' => {
                     self.pos += 1;
-                    let ended_line = self.line;
                     if b == b'\n' {
                         self.line += 1;
                     }
-                    if let Some(blk) = block {
-                        debug_assert!(blk.line <= ended_line);
-                        return Ok(Some(blk));
+                    if !block.is_empty() {
+                        return Ok(true);
                     }
                 }
                 b'(' => {
@@ -183,7 +263,7 @@ impl<'a> Blocks<'a> {
                     let line = self.line;
                     self.pos += 1;
                     let value = self.number(letter)?;
-                    block.get_or_insert_with(|| Block::new(line)).push(letter, value, line)?;
+                    block.push(letter, value, line)?;
                 }
                 other => return Err(self.alarm(AlarmCode::BadCharacter, Some(other))),
             }
@@ -195,19 +275,11 @@ impl Iterator for Blocks<'_> {
     type Item = Result<Block, Alarm>;
 
     fn next(&mut self) -> Option<Self::Item> {
-        if self.done {
-            return None;
-        }
-        match self.block() {
-            Ok(Some(b)) if !b.is_empty() => Some(Ok(b)),
-            Ok(_) => {
-                self.done = true;
-                None
-            }
-            Err(a) => {
-                self.done = true;
-                Some(Err(a))
-            }
+        let mut block = Block::new();
+        match self.read(&mut block) {
+            Ok(true) => Some(Ok(block)),
+            Ok(false) => None,
+            Err(a) => Some(Err(a)),
         }
     }
 }
@@ -258,6 +330,24 @@ mod tests {
             blocks("X1234567890123456789")[0],
             Err(Alarm::new(AlarmCode::BadNumber, Some(b'X'), Rule::PrjLex, 1))
         );
+    }
+
+    /// A block read in place holds only its own words: the previous block's are gone, and the
+    /// block reads as the iterator's fresh one.
+    #[test]
+    fn reading_in_place_keeps_only_the_blocks_words() {
+        let src = "G0 X1 Z2 M3\n(c)\nG92 U3 F1.5\n\nW-4\nX1 X2";
+        let mut reader = Blocks::new(src.as_bytes());
+        let mut block = Block::new();
+        for fresh in Blocks::new(src.as_bytes()) {
+            assert_eq!(reader.read(&mut block).map(|more| more.then_some(block)), fresh.map(Some));
+        }
+        assert_eq!(reader.read(&mut block), Ok(false), "ends after the alarm");
+        let mut reader = Blocks::new(b"G0 X1 Z2\n\nW-4");
+        assert_eq!((reader.read(&mut block), reader.read(&mut block)), (Ok(true), Ok(true)));
+        assert_eq!(block.letters().collect::<Vec<_>>(), b"W".to_vec());
+        assert_eq!((block.g_codes(), block.line, block.has(b'X')), (&[][..], 3, false));
+        assert_eq!(reader.read(&mut block), Ok(false));
     }
 
     #[test]

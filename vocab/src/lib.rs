@@ -22,7 +22,7 @@ pub mod units;
 pub mod text;
 
 pub use alarm::{Alarm, AlarmCode};
-pub use lex::{Block, Blocks};
+pub use lex::{letter_bit, letter_mask, Block, Blocks};
 pub use params::{Config, Dialect, Params};
 pub use rule::Rule;
 pub use trace::{Event, Move, MoveKind, Pass, PassKind};
