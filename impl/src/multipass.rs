@@ -145,14 +145,13 @@ impl Multi {
     }
 
     /// G76.INFEED.X, G76.INFEED.Z, G76.PATH: the cut of a pass at radius depth δ with Z offset
-    /// `off` (before the sign σ = −s).
+    /// `off` (before the sign σ = −s). Legal words keep every term below 2^40 (lengths ≤ 10^9,
+    /// tan(a/2) ≤ 57): the 64-bit arithmetic is exact, saturating only keeps an illegal value
+    /// from wrapping.
     fn cut(&self, depth: i64, off: i64) -> Cut {
-        let s = i128::from(self.s);
-        let x = i128::from(self.cx) + 2 * s * (i128::from(self.k) - i128::from(depth));
-        let z = i128::from(self.az) - s * i128::from(off);
-        let p0 = (sat(x), sat(z));
-        let end = (sat(x - 2 * i128::from(self.i)), sat(z + i128::from(self.w)));
-        Cut { p0, end }
+        let x = self.cx.saturating_add(self.s.saturating_mul(self.k.saturating_sub(depth)).saturating_mul(2));
+        let z = self.az.saturating_sub(self.s.saturating_mul(off));
+        Cut { p0: (x, z), end: (x.saturating_sub(self.i.saturating_mul(2)), z.saturating_add(self.w)) }
     }
 
     /// The cut of rough pass `r` (G76.DEPTH.*, G76.MODE, G78.MODE).
