@@ -235,7 +235,7 @@ pub const START_EVENTS: usize = 1 + STEPS as usize;
 /// `m` as an event, updating the machine position; `None` for a move to the current position,
 /// which is not emitted (PRJ.NOOP).
 #[inline(always)]
-fn emit(m: Move, pos: &mut (i64, i64)) -> Option<Event> {
+pub fn emit(m: Move, pos: &mut (i64, i64)) -> Option<Event> {
     if (m.x, m.z) == *pos {
         return None;
     }

@@ -7,6 +7,7 @@
 //! "G162 (M004)").
 
 use crate::fixed::{isqrt, mul_tan, mul_wide, sat};
+use crate::emit::emit;
 use cycle_vocab::{Alarm, AlarmCode, Config, Event, Move, Pass, PassKind, Rule, Units};
 
 /// The depth split of a multi-pass G162: P = thread depth, Q = allowance per pass (radius).
@@ -302,12 +303,8 @@ impl Cycle {
             }
             let mv = self.move_at(self.step);
             self.step += 1;
-            if let Some(m) = mv {
-                // PRJ.NOOP: a move to the current position is not emitted.
-                if (m.x, m.z) != *pos {
-                    *pos = (m.x, m.z);
-                    return Some(Event::Move(m));
-                }
+            if let Some(e) = mv.and_then(|m| emit(m, pos)) {
+                return Some(e);
             }
         }
     }

@@ -159,11 +159,7 @@ impl Expander<'_> {
                 Action::Move(m) => {
                     let m = *m;
                     self.action = Action::Nothing;
-                    // PRJ.NOOP: a move to the current position is not emitted.
-                    ((m.x, m.z) != *pos).then(|| {
-                        *pos = (m.x, m.z);
-                        Event::Move(m)
-                    })
+                    emit::emit(m, pos)
                 }
             };
             if let Some(e) = event {
