@@ -127,7 +127,7 @@ impl Cycle {
     }
 
     /// The next event of the cycle, updating the machine position; `None` when it is done.
-    /// Bounded work: at most [`STEPS`] skipped moves and one pass change per call.
+    /// Bounded work: at most `STEPS` (6) skipped moves and one pass change per call.
     #[inline]
     pub fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
         loop {

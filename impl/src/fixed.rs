@@ -300,7 +300,7 @@ pub fn tan_half_degrees(h: u32) -> Option<(u8, u128)> {
 }
 
 /// δ · tan(h · 0.5°) rounded half up, and whether the table's enclosure decides the rounding
-/// (always true for δ ≤ 10^9, see [`TAN_TABLE`]'s margin). `None` when h > 178 or the result
+/// (always true for δ ≤ 10^9, see `TAN_TABLE`'s margin). `None` when h > 178 or the result
 /// does not fit `u64`.
 pub fn mul_tan_checked(delta: u64, h: u32) -> Option<(u64, bool)> {
     let (int, frac) = tan_half_degrees(h)?;

@@ -288,7 +288,7 @@ impl Cycle {
     }
 
     /// The next event, updating the machine position; `None` when the cycle is done. Bounded
-    /// work: at most [`STEPS`] skipped moves and one pass change per call.
+    /// work: at most `STEPS` (5) skipped moves and one pass change per call.
     pub fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
         loop {
             if let Some(h) = self.header.take() {

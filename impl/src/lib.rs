@@ -120,7 +120,7 @@ impl Iterator for Expander<'_> {
 
     /// The hot path — the next move of a running G92/G76/G78 cycle — is small enough to inline
     /// into the caller's loop, so the event is written straight to where the caller keeps it;
-    /// everything else is [`Expander::next_slow`].
+    /// everything else is `Expander::next_slow`.
     #[inline]
     fn next(&mut self) -> Option<Self::Item> {
         if let Action::Cycle(c) = &mut self.action {
