@@ -74,12 +74,31 @@ fn switched(q: &Norm, n: u32) -> bool {
         return true;
     }
     let a = dd2 - dmin2; // < 2^126
-    let lhs = mul_wide(a, a); // (Δd² − Δdmin²)²
     let c = 2 * q.dd * q.dmin; // 2·Δd·Δdmin < 2^127
+    let m = u64::from(n.saturating_sub(1));
+    match (u64::try_from(a), u64::try_from(c)) {
+        // Legal words (Δd, Δdmin ≤ 999 999 999 < 2^30): a and c fit 64 bits, their squares 128.
+        (Ok(a), Ok(c)) => switch_test_narrow(a, c, m),
+        _ => switch_test_wide(a, c, m),
+    }
+}
+
+/// a² < c²·m with a, c < 2^64: 128-bit products; a right side beyond 2^128 exceeds a².
+fn switch_test_narrow(a: u64, c: u64, m: u64) -> bool {
+    let (a, c) = (u128::from(a), u128::from(c));
+    match (c * c).checked_mul(u128::from(m)) {
+        Some(rhs) => a * a < rhs,
+        None => true,
+    }
+}
+
+/// a² < c²·m with a < 2^126, c < 2^127: 256-bit products; a right side beyond 2^256 exceeds a².
+fn switch_test_wide(a: u128, c: u128, m: u64) -> bool {
+    let lhs = mul_wide(a, a); // (Δd² − Δdmin²)²
     let c2 = mul_wide(c, c); // 4·Δd²·Δdmin² < 2^254
-    match c2.checked_mul_u64(u64::from(n.saturating_sub(1))) {
+    match c2.checked_mul_u64(m) {
         Some(rhs) => lhs < rhs,
-        None => true, // the right side exceeds 2^256 > the left side
+        None => true,
     }
 }
 
@@ -265,6 +284,36 @@ mod tests {
                 assert_eq!(root(r * r + r, hint), r);
                 assert_eq!(root(r * r + r + 1, hint), r + 1);
             }
+        }
+    }
+
+    /// G76.DEPTH.MIN: the 128-bit switch test decides as the 256-bit one wherever it is used
+    /// (a, c < 2^64), on random values, at the products' overflow edges and at exact ties.
+    #[test]
+    fn narrow_switch_test_is_the_wide_one() {
+        let mut x = 0x2545_f491_4f6c_dd1du64;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        for _ in 0..50_000 {
+            let (a, c, m) = (next() >> (next() % 64), next() >> (next() % 64), next() >> (next() % 64));
+            assert_eq!(switch_test_narrow(a, c, m), switch_test_wide(a.into(), c.into(), m), "{a} {c} {m}");
+        }
+        let edges = [0, 1, 2, 3, (1 << 32) - 1, 1 << 32, (1 << 63) + 1, u64::MAX - 1, u64::MAX];
+        for a in edges {
+            for c in edges {
+                for m in edges {
+                    assert_eq!(switch_test_narrow(a, c, m), switch_test_wide(a.into(), c.into(), m), "{a} {c} {m}");
+                }
+            }
+        }
+        // Ties: a² = c²·m is no switch (strict <); one more on the right is.
+        for (a, c, m) in [(6u64, 3, 4), (1 << 40, 1 << 20, 1 << 40), (u64::MAX, u64::MAX, 1)] {
+            assert!(!switch_test_narrow(a, c, m) && !switch_test_wide(a.into(), c.into(), m));
+            assert!(switch_test_narrow(a - 1, c, m) && switch_test_wide((a - 1).into(), c.into(), m));
         }
     }
 
