@@ -4,15 +4,16 @@
 //! (criterion throughput in elements = events):
 //! - `baseline`: writes the case's events, already computed, one by one into a preallocated
 //!   buffer — the memory-bound limit of producing that many events of that size;
-//! - `impl`: the production expander writing the program's events into the same buffer with
-//!   `Expander::fill` (its batch API);
+//! - `impl`: the production expander writing the program's events into a buffer of the same
+//!   size with `Expander::fill` (its batch API);
 //! - `impl_iter`: the production expander as a streaming iterator, each event pushed into a
 //!   preallocated buffer;
 //! - `spec`: the executable reference expanding the program (owned trace).
 //!
 //! After criterion's own output, a table prints each case's figures as ratios (impl / baseline,
-//! impl / spec), the time per event and the time to the first event (latency). The README's
-//! table is copied from that output.
+//! impl / spec), the time per event and the time to the first event (latency), the five
+//! measurements of a case taken in turn over 15 rounds (see [`table`]). The README's table is
+//! copied from that output.
 
 use criterion::{black_box, BenchmarkId, Criterion, Throughput};
 use cycle_impl::Expander;
@@ -48,6 +49,14 @@ fn g76(target_passes: u32) -> Case {
     Case { name: format!("g76/{target_passes}_target"), program: p, config: Config::default() }
 }
 
+/// G76 with a minimum cut that is never reached (Δd = 0.2, Δdmin = 0.001: the switch of
+/// G76.DEPTH.MIN would come after pass 10 000): every one of the ~9 900 rough passes takes the
+/// switch test and a square root — the costliest pass change of a single-start cycle.
+fn g76_min_cut_unreached() -> Case {
+    let p = "G0 X80 Z5\nG76 P011060 Q0.001 R0.1\nG76 X27.4 Z-20 P20.0 Q0.2 F2\n";
+    Case { name: "g76/9900_min_cut_unreached".into(), program: p.into(), config: Config::default() }
+}
+
 /// G78 constant depth (mode 3, depth mode 0): T/Δd rough passes, Δd = 1 increment.
 fn g78(passes: i64) -> Case {
     let k = passes + 50;
@@ -72,6 +81,7 @@ fn cases() -> Vec<Case> {
     for n in [1, 10, 100, 1_000, 9_900] {
         v.push(g76(n));
     }
+    v.push(g76_min_cut_unreached());
     for n in [1, 100, 9_900] {
         v.push(g78(n));
     }
@@ -145,33 +155,38 @@ fn bench(c: &mut Criterion, cases: &[Case]) {
     }
 }
 
-/// Median of `runs` timings of `f`, each repeated until it lasts at least 2 ms.
-fn median_ns(runs: usize, mut f: impl FnMut()) -> f64 {
+/// How many calls of `f` last at least 2 ms.
+fn reps_for(f: &mut dyn FnMut()) -> u32 {
     let mut reps = 1u32;
     loop {
-        let t = Instant::now();
-        for _ in 0..reps {
-            f();
-        }
-        if t.elapsed() >= Duration::from_millis(2) || reps >= 1 << 20 {
-            break;
+        if time_ns(reps, f) * f64::from(reps) >= 2e6 || reps >= 1 << 20 {
+            return reps;
         }
         reps *= 2;
     }
-    let mut v: Vec<f64> = (0..runs)
-        .map(|_| {
-            let t = Instant::now();
-            for _ in 0..reps {
-                f();
-            }
-            t.elapsed().as_nanos() as f64 / reps as f64
-        })
-        .collect();
-    v.sort_by(|a, b| a.total_cmp(b));
-    v[runs / 2]
 }
 
-/// The summary table: figures measured in this run (medians of 15 runs per figure).
+/// The time of one call of `f`, in ns, over `reps` calls.
+fn time_ns(reps: u32, f: &mut dyn FnMut()) -> f64 {
+    let t = Instant::now();
+    for _ in 0..reps {
+        f();
+    }
+    t.elapsed().as_nanos() as f64 / f64::from(reps)
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(|a, b| a.total_cmp(b));
+    v[v.len() / 2]
+}
+
+/// Rounds per figure of the summary table.
+const ROUNDS: usize = 15;
+
+/// The summary table: figures measured in this run. The five measurements of a case are taken
+/// in turn, round after round, so that each round's ratios compare timings taken moments
+/// apart (the build machine is a shared VM whose speed drifts); each figure is the median over
+/// the rounds, each ratio the median of the rounds' ratios.
 fn table(cases: &[Case]) {
     println!("\n## cyclecheck expander figures (this run)\n");
     println!(
@@ -181,18 +196,28 @@ fn table(cases: &[Case]) {
     for case in cases {
         let events = events(case);
         let n = events.len() as f64;
-        let mut buffer = events.clone();
+        let (mut copied, mut filled) = (events.clone(), events.clone());
         let mut pushed = Vec::with_capacity(events.len());
-        let base = median_ns(15, || baseline_into(&mut buffer, black_box(&events)));
-        let imp = median_ns(15, || impl_into(&mut buffer, black_box(case)));
-        assert_eq!(buffer, events, "bench case {}: fill wrote other events", case.name);
-        let iter = median_ns(15, || iter_into(&mut pushed, black_box(case)));
-        let spec = median_ns(15, || {
+        let mut base = || baseline_into(&mut copied, black_box(&events));
+        let mut imp = || impl_into(&mut filled, black_box(case));
+        let mut iter = || iter_into(&mut pushed, black_box(case));
+        let mut spec = || {
             black_box(cycle_spec::expand(black_box(case.program.as_bytes()), &case.config));
-        });
-        let first = median_ns(15, || {
+        };
+        let mut first = || {
             black_box(Expander::new(black_box(case.program.as_bytes()), case.config).next());
-        });
+        };
+        let mut measures: [&mut dyn FnMut(); 5] = [&mut base, &mut imp, &mut iter, &mut spec, &mut first];
+        let reps: Vec<u32> = measures.iter_mut().map(|f| reps_for(&mut **f)).collect();
+        let mut ns = vec![Vec::new(); 5];
+        for _ in 0..ROUNDS {
+            for ((f, &r), times) in measures.iter_mut().zip(&reps).zip(&mut ns) {
+                times.push(time_ns(r, &mut **f));
+            }
+        }
+        assert_eq!(filled, events, "bench case {}: fill wrote other events", case.name);
+        let [base, imp, iter, spec, first] = [0, 1, 2, 3, 4].map(|i| median(ns[i].clone()));
+        let ratio = |num: usize, den: usize| median(ns[num].iter().zip(&ns[den]).map(|(a, b)| a / b).collect());
         let rate = |ns: f64| n / ns * 1e3; // events per ns → M events per s
         println!(
             "| {} | {} | {:.1} | {:.1} | {:.1} | {:.2} | {:.2} | {:.2} | {:.2} | {:.1} | {:.0} |",
@@ -202,9 +227,9 @@ fn table(cases: &[Case]) {
             rate(iter),
             rate(base),
             rate(spec),
-            base / imp,
-            spec / imp,
-            base / iter,
+            ratio(0, 1),
+            ratio(3, 1),
+            ratio(0, 2),
             imp / n,
             first
         );
