@@ -96,9 +96,10 @@ impl<'a> Expander<'a> {
                 }
                 continue;
             }
-            match self.next_slow() {
+            match self.fill_slow() {
                 None => break,
-                Some(Ok(e)) => {
+                Some(Ok(None)) => {}
+                Some(Ok(Some(e))) => {
                     if let Some(slot) = rest.first_mut() {
                         *slot = e;
                         n += 1;
@@ -166,23 +167,40 @@ impl Expander<'_> {
                 return Some(Ok(e));
             }
             self.action = Action::Nothing;
-            if self.ended {
-                self.done = true;
-                return None;
-            }
-            match self.blocks.read(&mut self.block) {
+            match self.read_block() {
                 Ok(true) => {}
-                Ok(false) => {
-                    self.done = true;
-                    return None;
-                }
-                Err(a) => return self.fail(a),
-            }
-            match self.machine.block(&self.block, &mut self.action) {
-                Ok(end) => self.ended = end,
+                Ok(false) => return None,
                 Err(a) => return self.fail(a),
             }
         }
+    }
+
+    /// [`Expander::fill`] outside a running G92/G76/G78 cycle: between cycles the next block
+    /// is read without taking an event from it (`Ok(None)`), so that a cycle's first events are
+    /// written by the cycle too; otherwise as [`Expander::next_slow`].
+    #[inline(never)]
+    fn fill_slow(&mut self) -> Option<Result<Option<Event>, Alarm>> {
+        let steady = self.checked && !self.done && self.pending.is_none();
+        if steady && matches!(self.action, Action::Nothing) {
+            return match self.read_block() {
+                Ok(true) => Some(Ok(None)),
+                Ok(false) => None,
+                Err(a) => self.fail(a).map(|r| r.map(Some)),
+            };
+        }
+        self.next_slow().map(|r| r.map(Some))
+    }
+
+    /// With nothing running: reads the next block into the action it asks for (possibly
+    /// nothing); `false` when the program is over (its end, or the block after M02/M30). An
+    /// alarm is for the caller to [`fail`](Expander::fail) with.
+    fn read_block(&mut self) -> Result<bool, Alarm> {
+        if self.ended || !self.blocks.read(&mut self.block)? {
+            self.done = true;
+            return Ok(false);
+        }
+        self.ended = self.machine.block(&self.block, &mut self.action)?;
+        Ok(true)
     }
 }
 
