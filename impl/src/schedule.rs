@@ -252,6 +252,7 @@ fn switch_pass(q: &Norm, cap: u128) -> u128 {
 mod tests {
     extern crate std;
     use super::*;
+    use crate::tests::xorshift;
     use std::vec::Vec;
 
     /// G76.DEPTH.1: the guess only saves work — any guess gives the exact rounded root, also
@@ -266,11 +267,9 @@ mod tests {
                 assert_eq!(root(v, hint), exact, "v = {v}, guess {hint}");
             }
         }
-        let mut x = 0x9e37_79b9_7f4a_7c15u64;
+        let mut s = 0x9e37_79b9_7f4a_7c15u64;
         for _ in 0..20_000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = xorshift(&mut s);
             let v = (u128::from(x) << 62 ^ u128::from(x.rotate_left(17))) >> (x % 64);
             let exact = sqrt_round(v);
             for hint in [exact.saturating_sub(2), exact - exact.min(1), exact, exact + 1, exact + 2, 0, u128::MAX] {
@@ -291,13 +290,8 @@ mod tests {
     /// (a, c < 2^64), on random values, at the products' overflow edges and at exact ties.
     #[test]
     fn narrow_switch_test_is_the_wide_one() {
-        let mut x = 0x2545_f491_4f6c_dd1du64;
-        let mut next = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            x
-        };
+        let mut s = 0x2545_f491_4f6c_dd1du64;
+        let mut next = || xorshift(&mut s);
         for _ in 0..50_000 {
             let (a, c, m) = (next() >> (next() % 64), next() >> (next() % 64), next() >> (next() % 64));
             assert_eq!(switch_test_narrow(a, c, m), switch_test_wide(a.into(), c.into(), m), "{a} {c} {m}");
@@ -533,13 +527,8 @@ mod tests {
                 }
             }
         }
-        let mut x = 0x9e37_79b9_7f4a_7c15u64;
-        let mut rnd = |max: u64| {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            1 + (x % max) as i64
-        };
+        let mut s = 0x9e37_79b9_7f4a_7c15u64;
+        let mut rnd = |max: u64| 1 + (xorshift(&mut s) % max) as i64;
         for _ in 0..2000 {
             let scale = [10, 1000, 100_000, 999_999_999][rnd(4) as usize - 1];
             let p = ScheduleParams {

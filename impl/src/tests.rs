@@ -510,7 +510,8 @@ fn stream_rules() {
     assert_eq!(moves(&t), [Move::feed(5_000, -1_000, 20_000, Rule::PrjModal)]);
 }
 
-/// A fixed-seed xorshift generator for the random drivers (here and in `g162_tests`).
+/// A fixed-seed xorshift generator for the random drivers (here, in `g162_tests` and in
+/// `schedule`'s tests).
 pub fn xorshift(state: &mut u64) -> u64 {
     *state ^= *state << 13;
     *state ^= *state >> 7;
