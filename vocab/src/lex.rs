@@ -59,7 +59,7 @@ impl Block {
 
     /// Empties the block for reuse: only the words present are reset, so that it equals a new
     /// block.
-    fn clear(&mut self, line: u32) {
+    fn clear(&mut self) {
         let mut present = self.present;
         while present != 0 {
             if let Some(w) = self.words.get_mut(present.trailing_zeros() as usize) {
@@ -72,7 +72,7 @@ impl Block {
             *g = ZERO;
         }
         self.g_count = 0;
-        self.line = line;
+        self.line = 0;
     }
 
     /// The word at `letter` (upper case, not G).
@@ -230,7 +230,7 @@ impl<'a> Blocks<'a> {
         if self.done {
             return Ok(false);
         }
-        block.clear(self.line);
+        block.clear();
         let read = self.block(block);
         self.done = !matches!(read, Ok(true));
         read
