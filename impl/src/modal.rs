@@ -191,11 +191,15 @@ impl Machine {
         }
         // (4), (5) and the action.
         match kind {
-            Kind::Rapid | Kind::Feed => self.linear(kind, motion.is_some(), &v, axis, line, action)?,
+            Kind::Rapid | Kind::Feed => {
+                *action = self.linear(kind, motion.is_some(), &v, axis, line)?.map_or(Action::Nothing, Action::Move);
+            }
             Kind::G92 => self.g92(motion.is_some(), &v, axis, line, action)?,
             Kind::First(code) => self.first(code, &v),
             Kind::Second(code) => self.second(code, &v, line, action)?,
-            Kind::Thread(code) => self.thread(code, motion.is_some(), &v, axis, line, action)?,
+            Kind::Thread(code) => {
+                *action = self.thread(code, motion.is_some(), &v, axis, line)?.map_or(Action::Nothing, Action::Move);
+            }
             Kind::G162 => self.g162(&v, line, action)?,
         }
         Ok(end)
@@ -375,16 +379,8 @@ impl Machine {
         Ok(if self.config.params.x_radius == 1 { 2 * v } else { v })
     }
 
-    /// PRJ.MODAL: G00 / G01 blocks (and non-motion blocks in those modes).
-    fn linear(
-        &mut self,
-        kind: Kind,
-        coded: bool,
-        v: &Vals,
-        axis: bool,
-        line: u32,
-        action: &mut Action,
-    ) -> Result<(), Alarm> {
+    /// PRJ.MODAL: G00 / G01 blocks (and non-motion blocks in those modes); the move, if any.
+    fn linear(&mut self, kind: Kind, coded: bool, v: &Vals, axis: bool, line: u32) -> Result<Option<Move>, Alarm> {
         if let Some(f) = v.lead {
             self.feed = Some(f);
         }
@@ -392,7 +388,7 @@ impl Machine {
             self.mode = if kind == Kind::Feed { Mode::Feed } else { Mode::Rapid };
         }
         if !axis {
-            return Ok(());
+            return Ok(None);
         }
         let (x, z) = if self.config.dialect == Dialect::Nc201 {
             self.nc201_end_point(v, self.pos)
@@ -404,11 +400,9 @@ impl Machine {
             let Some(f) = self.feed else {
                 return Err(Alarm::new(AlarmCode::MissingWord, Some(b'F'), Rule::ComLead, line));
             };
-            *action = Action::Move(Move::feed(x, z, f, Rule::PrjModal));
-            return Ok(());
+            return Ok(Some(Move::feed(x, z, f, Rule::PrjModal)));
         }
-        *action = Action::Move(Move::rapid(x, z, Rule::PrjModal));
-        Ok(())
+        Ok(Some(Move::rapid(x, z, Rule::PrjModal)))
     }
 
     /// G92.MODAL, G92.FORMAT: a block in G92 mode or with G92.
@@ -545,7 +539,7 @@ impl Machine {
     }
 
     /// G32, G33, G34 (PRJ.MODAL, M003): modal thread moves. (4) a block with axis words needs a
-    /// lead (COM.LEAD), G34 its K (G34); (5) the G34 lead bound; then one thread move.
+    /// lead (COM.LEAD), G34 its K (G34); (5) the G34 lead bound; then the thread move, if any.
     fn thread(
         &mut self,
         code: ThreadCode,
@@ -553,8 +547,7 @@ impl Machine {
         v: &Vals,
         axis: bool,
         line: u32,
-        action: &mut Action,
-    ) -> Result<(), Alarm> {
+    ) -> Result<Option<Move>, Alarm> {
         if let Some(f) = v.lead {
             self.feed = Some(f);
         }
@@ -562,7 +555,7 @@ impl Machine {
             self.mode = Mode::Thread(code);
         }
         if !axis {
-            return Ok(());
+            return Ok(None);
         }
         let missing = |word: u8, rule: Rule| Alarm::new(AlarmCode::MissingWord, Some(word), rule, line);
         let lead = self.feed.ok_or(missing(b'F', Rule::ComLead))?;
@@ -574,8 +567,7 @@ impl Machine {
         let p = v.p.and_then(|p| u32::try_from(p).ok()).unwrap_or(0);
         let to = Self::end_point(v, self.pos, self.pos);
         let words = ThreadWords { lead, p, k };
-        *action = Action::Move(thread_move(code, self.pos, to, &words, self.config.grid, line)?);
-        Ok(())
+        thread_move(code, self.pos, to, &words, self.config.grid, line).map(Some)
     }
 
     /// G162.FORMAT: (4) missing words — F (G162.F), H (G162.H), P/Q as a pair (G162.PQ), X, Z
