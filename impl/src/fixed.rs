@@ -299,30 +299,55 @@ pub fn tan_half_degrees(h: u32) -> Option<(u8, u128)> {
     TAN_TABLE.get(usize::try_from(h).ok()?).copied()
 }
 
+/// tan(h · 0.5°) from [`TAN_TABLE`], looked up once where many depths are multiplied by it
+/// (G76.INFEED.Z: every pass).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Tan {
+    int: u8,
+    /// The fraction · 2^128 as two halves (8-byte alignment keeps the cycle state small).
+    frac: [u64; 2],
+}
+
+impl Tan {
+    /// tan 0: every product is 0.
+    pub const ZERO: Tan = Tan { int: 0, frac: [0; 2] };
+
+    /// tan(h · 0.5°); `None` when h > 178 (beyond 89°).
+    pub fn half_degrees(h: u32) -> Option<Tan> {
+        tan_half_degrees(h).map(|(int, frac)| Tan { int, frac: [(frac >> 64) as u64, frac as u64] })
+    }
+
+    /// δ · tan rounded half up, and whether the table's enclosure decides the rounding (always
+    /// true for δ ≤ 10^9, see `TAN_TABLE`'s margin). `None` when the result does not fit `u64`.
+    pub fn mul_checked(self, delta: u64) -> Option<(u64, bool)> {
+        let frac = u128::from(self.frac[0]) << 64 | u128::from(self.frac[1]);
+        let x = mul_wide(u128::from(delta), frac);
+        // δ·tan ∈ [δ·int + x/2^128, δ·int + (x + δ)/2^128). Rounding half up adds 1 when the
+        // fraction x.lo / 2^128 is at least one half. x.hi < δ and int < 2^8: no overflow.
+        let up = x.lo >> 127;
+        let whole = u128::from(delta) * u128::from(self.int) + x.hi + up;
+        // The rounding is decided when x.lo + δ does not cross the next half-integer boundary.
+        let shifted = x.lo ^ (1u128 << 127); // distance above the last boundary, mod 2^128
+        let decided = frac == 0 || shifted.checked_add(u128::from(delta)).is_some();
+        Some((u64::try_from(whole).ok()?, decided))
+    }
+
+    /// δ · tan rounded half up; saturates at `u64::MAX` where it does not fit.
+    pub fn times(self, delta: u64) -> u64 {
+        self.mul_checked(delta).map_or(u64::MAX, |(v, _)| v)
+    }
+}
+
 /// δ · tan(h · 0.5°) rounded half up, and whether the table's enclosure decides the rounding
-/// (always true for δ ≤ 10^9, see `TAN_TABLE`'s margin). `None` when h > 178 or the result
-/// does not fit `u64`.
+/// ([`Tan::mul_checked`]). `None` when h > 178 or the result does not fit `u64`.
 pub fn mul_tan_checked(delta: u64, h: u32) -> Option<(u64, bool)> {
-    let (int, frac) = tan_half_degrees(h)?;
-    let x = mul_wide(u128::from(delta), frac);
-    // δ·tan ∈ [δ·int + x/2^128, δ·int + (x + δ)/2^128). Rounding half up adds 1 when the
-    // fraction x.lo / 2^128 is at least one half.
-    let up = x.lo >> 127;
-    let whole = u128::from(delta).checked_mul(u128::from(int))?.checked_add(x.hi)?.checked_add(up)?;
-    // The rounding is decided when x.lo + δ does not cross the next half-integer boundary.
-    let shifted = x.lo ^ (1u128 << 127); // distance above the last boundary, mod 2^128
-    let decided = frac == 0 || shifted.checked_add(u128::from(delta)).is_some();
-    Some((u64::try_from(whole).ok()?, decided))
+    Tan::half_degrees(h)?.mul_checked(delta)
 }
 
 /// δ · tan(h · 0.5°) rounded half up (G76.INFEED.Z, G76.PULLOUT); saturates at `u64::MAX`
 /// where it does not fit, 0 when h > 178.
 pub fn mul_tan(delta: u64, h: u32) -> u64 {
-    match mul_tan_checked(delta, h) {
-        Some((v, _)) => v,
-        None if h <= TAN_MAX_INDEX => u64::MAX,
-        None => 0,
-    }
+    Tan::half_degrees(h).map_or(0, |t| t.times(delta))
 }
 
 /// The spindle start angle of start `j` of `l`, in 0.001°: round(360 000 · j / l)

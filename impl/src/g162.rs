@@ -6,7 +6,7 @@
 //! feeds (F, H, I) lead counts; angles (B, J) 0.001°, A half degrees (docs/INTERPRETATION.md,
 //! "G162 (M004)").
 
-use crate::fixed::{isqrt, mul_tan, mul_wide, sat};
+use crate::fixed::{isqrt, mul_wide, sat, Tan};
 use crate::emit::emit;
 use cycle_vocab::{Alarm, AlarmCode, Config, Event, Move, Pass, PassKind, Rule, Units};
 
@@ -225,8 +225,8 @@ pub struct Cycle {
     change: i64,
     change_angle: u32,
     floor: i64,
-    /// |A| in half degrees and σ = s·sign(A).
-    tan_index: u32,
+    /// tan of |A| (A in half degrees; looked up once) and σ = s·sign(A).
+    tan: Tan,
     sigma: i64,
     /// The split, or `None` for a single pass.
     split: Option<SplitParams>,
@@ -241,7 +241,7 @@ const STEPS: u8 = 5;
 impl Cycle {
     /// G162.A: t(d) = σ·round(d·tan|A|).
     fn shift(&self, depth: i64) -> i128 {
-        let t = mul_tan(depth.max(0).unsigned_abs(), self.tan_index);
+        let t = self.tan.times(depth.max(0).unsigned_abs());
         i128::from(self.sigma) * i128::from(t)
     }
 
@@ -369,7 +369,8 @@ pub fn cycle(config: &Config, w: &Words, start: (i64, i64), line: u32) -> Result
         change,
         change_angle,
         floor,
-        tan_index: u32::try_from(w.a.unsigned_abs()).unwrap_or(u32::MAX),
+        // |A| beyond 89° (never a legal word): 0, as `mul_tan`.
+        tan: u32::try_from(w.a.unsigned_abs()).ok().and_then(Tan::half_degrees).unwrap_or(Tan::ZERO),
         sigma: s * w.a.signum(),
         split: w.split,
         pass,

@@ -2,9 +2,9 @@
 //! second block's checks (step 5 of the check order) and the pass plan.
 
 use crate::emit::{Cut, Cycle, Path, Plan};
-use crate::fixed::{mul_tan, sat};
+use crate::fixed::{sat, Tan};
 use crate::pullout::{multi_amounts, offsets, tenths_of_lead, travel};
-use crate::schedule::{self, Rough, ScheduleParams};
+use crate::schedule::{Rough, Schedule, ScheduleParams};
 use cycle_vocab::{Alarm, AlarmCode, Config, Pass, PassKind, Rule};
 
 /// Which multi-pass code.
@@ -85,55 +85,44 @@ enum Flank {
     Left,
 }
 
-/// G76.MODE / G78.MODE: the flank of rough pass `n` (odd/even among rough passes).
-fn flank(code: Code, mode: u32, n: u32) -> Flank {
-    let odd = n % 2 == 1;
+/// G76.MODE / G78.MODE: the flanks of the rough passes, (even n, odd n).
+fn flanks(code: Code, mode: u32) -> (Flank, Flank) {
     match (code, mode) {
-        (Code::G76, 1) | (Code::G78, 3) => {
-            if odd {
-                Flank::Right
-            } else {
-                Flank::Centre
-            }
-        }
-        (Code::G76, 2) | (Code::G78, 4) => {
-            if odd {
-                Flank::Left
-            } else {
-                Flank::Right
-            }
-        }
-        (Code::G78, 0) => Flank::Centre,
-        (Code::G78, 1) => Flank::Left,
-        _ => Flank::Right, // G76 e = 0, G78 mode 2
+        (Code::G76, 1) | (Code::G78, 3) => (Flank::Centre, Flank::Right),
+        (Code::G76, 2) | (Code::G78, 4) => (Flank::Right, Flank::Left),
+        (Code::G78, 0) => (Flank::Centre, Flank::Centre),
+        (Code::G78, 1) => (Flank::Left, Flank::Left),
+        _ => (Flank::Right, Flank::Right), // G76 e = 0, G78 mode 2
     }
 }
 
 /// The pass plan of a multi-pass cycle and its fixed geometry.
 #[derive(Clone, Copy, Debug)]
 pub struct Multi {
-    code: Code,
-    mode: u32,
-    sched: ScheduleParams,
+    /// The flanks of even and odd rough passes (G76.MODE, G78.MODE).
+    flanks: (Flank, Flank),
+    sched: Schedule,
     /// The current rough pass, `None` once finishing.
     rough: Option<Rough>,
     /// Finishing passes done (including the current one).
     finish: u32,
     m: u32,
     index: u32,
-    /// C.x, diameter.
-    cx: i64,
+    /// B.x = C.x + 2·s·k, diameter: where a cut at depth 0 would start.
+    bx: i64,
+    /// −2s: X on diameter per increment of radius depth (s the side, ±1).
+    x_per_depth: i64,
     /// A.z.
     az: i64,
-    /// Side s (±1).
-    s: i64,
+    /// σ = −s: Z per increment of the Z offset.
+    sigma: i64,
     k: i64,
-    /// R(i), radius.
-    i: i64,
+    /// −2·R(i): the cut's X travel on diameter.
+    taper: i64,
     /// W.
     w: i64,
-    /// Tool angle a (tan index a half-degrees = a/2 degrees).
-    a: u32,
+    /// tan(a/2), a the tool angle (looked up once; a is a legal word, ≤ 178 half degrees).
+    tan: Tan,
     /// t(T) = round(T·tan(a/2)).
     t_target: i64,
 }
@@ -141,23 +130,24 @@ pub struct Multi {
 impl Multi {
     /// G76.INFEED.Z: t(δ) = round(δ·tan(a/2)).
     fn t(&self, depth: i64) -> i64 {
-        i64::try_from(mul_tan(depth.max(0).unsigned_abs(), self.a)).unwrap_or(i64::MAX)
+        i64::try_from(self.tan.times(depth.max(0).unsigned_abs())).unwrap_or(i64::MAX)
     }
 
     /// G76.INFEED.X, G76.INFEED.Z, G76.PATH: the cut of a pass at radius depth δ with Z offset
-    /// `off` (before the sign σ = −s). Legal words keep every term below 2^40 (lengths ≤ 10^9,
-    /// tan(a/2) ≤ 57): the 64-bit arithmetic is exact, saturating only keeps an illegal value
-    /// from wrapping.
+    /// `off`: from (B.x − 2s·δ, A.z + σ·off), travelling (−2i, W). Legal words keep every term
+    /// below 2^40 (lengths ≤ 10^9, tan(a/2) ≤ 57): the 64-bit arithmetic is exact, saturating
+    /// only keeps an illegal value from wrapping.
     fn cut(&self, depth: i64, off: i64) -> Cut {
-        let x = self.cx.saturating_add(self.s.saturating_mul(self.k.saturating_sub(depth)).saturating_mul(2));
-        let z = self.az.saturating_sub(self.s.saturating_mul(off));
-        Cut { p0: (x, z), end: (x.saturating_sub(self.i.saturating_mul(2)), z.saturating_add(self.w)) }
+        let x = self.bx.saturating_add(self.x_per_depth.saturating_mul(depth));
+        let z = self.az.saturating_add(self.sigma.saturating_mul(off));
+        Cut { p0: (x, z), end: (x.saturating_add(self.taper), z.saturating_add(self.w)) }
     }
 
     /// The cut of rough pass `r` (G76.DEPTH.*, G76.MODE, G78.MODE).
     #[inline]
     fn rough_cut(&self, r: &Rough) -> Cut {
-        let off = match flank(self.code, self.mode, r.n) {
+        let flank = if r.n % 2 == 1 { self.flanks.1 } else { self.flanks.0 };
+        let off = match flank {
             Flank::Right => self.t(r.depth),
             Flank::Centre => self.t_target,
             // The mirror of the right flank about the centre.
@@ -183,7 +173,7 @@ impl Multi {
 
     /// The cut of the first pass.
     fn begin(&mut self) -> Cut {
-        let r = schedule::first(&self.sched);
+        let r = self.sched.first();
         self.rough = Some(r);
         self.index = 1;
         self.rough_cut(&r)
@@ -195,7 +185,7 @@ impl Multi {
     pub fn advance(&mut self) -> Option<Cut> {
         self.index = self.index.checked_add(1)?;
         if let Some(prev) = self.rough {
-            if let Some(r) = schedule::next(&self.sched, &prev) {
+            if let Some(r) = self.sched.next(&prev) {
                 self.rough = Some(r);
                 return Some(self.rough_cut(&r));
             }
@@ -249,10 +239,10 @@ pub fn cycle(
     }
     let target = sec.k - first.d; // 1 ≤ T ≤ N
     let sched =
-        ScheduleParams { first_cut: sec.dd, min_cut: first.dmin, target, constant: !first.degressive };
+        Schedule::new(&ScheduleParams { first_cut: sec.dd, min_cut: first.dmin, target, constant: !first.degressive });
     let max = config.params.max_passes;
     let too_many = alarm(AlarmCode::TooManyPasses, b'Q', Rule::PrjMaxPass);
-    let rough = schedule::rough_pass_count(&sched, max).ok_or(too_many)?;
+    let rough = sched.rough_pass_count(max).ok_or(too_many)?;
     let total = (u64::from(rough) + u64::from(first.m)).saturating_mul(u64::from(first.starts));
     if total > u64::from(max) {
         return Err(too_many);
@@ -271,20 +261,21 @@ pub fn cycle(
     }
     let s = sat(s);
     let mut multi = Multi {
-        code,
-        mode: first.mode,
+        flanks: flanks(code, first.mode),
         sched,
         rough: None,
         finish: 0,
         m: first.m,
         index: 0,
-        cx: sat(cx),
+        bx: sat(bx),
+        x_per_depth: -2 * s,
         az: a.1,
-        s,
+        sigma: -s,
         k: sec.k,
-        i: sec.i,
+        taper: sat(-2 * i128::from(sec.i)),
         w,
-        a: first.a,
+        // Beyond 89° (never a legal word): 0, as `mul_tan`.
+        tan: Tan::half_degrees(first.a).unwrap_or(Tan::ZERO),
         t_target: 0,
     };
     multi.t_target = multi.t(target);

@@ -18,8 +18,8 @@
 //! whole-sequence view (cuts, the last depth, the count) over the first K + 1 passes.
 //!
 //! **Kani bounds.** K = [`KANI`]`.max_passes` = 4: the harness loop runs at most K + 1 = 5
-//! times and `rough_pass_count` at most `limit + 1` ≤ 5 steps; `isqrt` loops at most 64 times.
-//! So `#[kani::unwind(65)]` covers every loop. Parameters are symbolic over the full legal
+//! times; the switch pass's binary search (only for words beyond 2^31, outside the legal
+//! ranges) at most 33; `isqrt` is loop-free. So `#[kani::unwind(65)]` covers every loop. Parameters are symbolic over the full legal
 //! ranges.
 
 use crate::schedule::Schedule;
@@ -97,7 +97,7 @@ pub fn body<S: Source, Sch: Schedule>(src: &mut S, sch: &Sch, scope: &Scope) -> 
 }
 
 /// Kani: bounds, cuts and the pass count over the first K + 1 = 5 passes of every legal
-/// schedule. Unwind 65: the harness loop ≤ 5, `rough_pass_count`'s binary search ≤ 34, `isqrt` loop-free.
+/// schedule. Unwind 65: the harness loop ≤ 5, the switch-pass search ≤ 33, `isqrt` loop-free.
 #[cfg(kani)]
 #[kani::proof]
 #[kani::unwind(65)]

@@ -17,7 +17,7 @@
 //! ([`crate::model::switch_pass`], closed form, computed here independently), the exact depth is
 //! √n·Δd for n < s and √(s−1)·Δd + (n − s + 1)·Δdmin from s on (n·Δd in constant mode), rounded
 //! half up, clamped to T where it reaches T. Before the switch (and in constant mode)
-//! `cycle_impl::schedule::next` depends on `prev.n` only (documented: "before the switch the
+//! `cycle_impl::schedule::Schedule::next` depends on `prev.n` only (documented: "before the switch the
 //! depth is recomputed from n"), so pass n is taken from the API itself — `first(p)` for n = 1,
 //! else `next(p, ·)` of a pass n − 1 — and the harness *checks* it against the exact bracket of
 //! √n·Δd (no root taken: r(r−1) < n·Δd² ≤ r(r+1)). From the switch on, pass n is the closed
@@ -30,9 +30,9 @@
 //! and for monotonicity. Hence every reachable pass equals the closed form, and every step of
 //! every schedule is monotone — for all n, not only the first few.
 //!
-//! **Kani bounds.** Everything is symbolic over the full legal ranges. The only loops are in
-//! `cycle_impl::fixed::isqrt` (two loops of at most 64 iterations each, one per bit pair of a
-//! `u128`), so `#[kani::unwind(65)]`. Our own model is loop-free.
+//! **Kani bounds.** Everything is symbolic over the full legal ranges. The only loop is the
+//! switch pass's binary search in `cycle_impl::schedule` (at most 33 iterations, and only for
+//! words beyond 2^31), so `#[kani::unwind(65)]`. Our own model is loop-free.
 
 use crate::model::{depth_square, is_sqrt_round, sqrt_round_at_least, switch_pass};
 use crate::schedule::Schedule;
@@ -208,8 +208,8 @@ pub fn body<S: Source, Sch: Schedule>(src: &mut S, sch: &Sch, scope: &Scope) -> 
 }
 
 /// Kani: the step property for every legal parameter set and every reachable pass n.
-/// Unwind 65: `isqrt` has two loops of ≤ 64 iterations (one per bit pair of a u128); nothing
-/// else loops.
+/// Unwind 65: `isqrt` is loop-free; the switch-pass search (words beyond 2^31 only) loops at
+/// most 33 times; nothing else loops.
 #[cfg(kani)]
 #[kani::proof]
 #[kani::unwind(65)]

@@ -4,7 +4,7 @@
 use cycle_impl::schedule::{self, Rough, ScheduleParams};
 
 /// A G76/G78 rough-pass depth schedule (G76.DEPTH.1, G76.DEPTH.MIN, G76.DEPTH.LAST,
-/// G78.DEPTHMODE), with the signatures of `cycle_impl::schedule`.
+/// G78.DEPTHMODE): `cycle_impl::schedule::Schedule` prepared from `p` and asked one question.
 pub trait Schedule {
     /// The first rough pass.
     fn first(&self, p: &ScheduleParams) -> Rough;
@@ -14,21 +14,21 @@ pub trait Schedule {
     fn rough_pass_count(&self, p: &ScheduleParams, limit: u32) -> Option<u32>;
 }
 
-/// The production schedule, `cycle_impl::schedule`.
+/// The production schedule, `cycle_impl::schedule::Schedule`.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Production;
 
 impl Schedule for Production {
     fn first(&self, p: &ScheduleParams) -> Rough {
-        schedule::first(p)
+        schedule::Schedule::new(p).first()
     }
 
     fn next(&self, p: &ScheduleParams, prev: &Rough) -> Option<Rough> {
-        schedule::next(p, prev)
+        schedule::Schedule::new(p).next(prev)
     }
 
     fn rough_pass_count(&self, p: &ScheduleParams, limit: u32) -> Option<u32> {
-        schedule::rough_pass_count(p, limit)
+        schedule::Schedule::new(p).rough_pass_count(limit)
     }
 }
 
