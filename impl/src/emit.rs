@@ -60,8 +60,10 @@ pub struct Cycle {
 /// Steps of one start: approach, lead-in, cut, pull-out, retract X, retract Z.
 const STEPS: u8 = 6;
 
+/// `p + d`. Pass points and offsets come from range-checked words (every term below 2^40), so
+/// the sum never wraps; wrapping arithmetic keeps an impossible overflow from panicking.
 fn add(p: (i64, i64), d: (i64, i64)) -> (i64, i64) {
-    (p.0.saturating_add(d.0), p.1.saturating_add(d.1))
+    (p.0.wrapping_add(d.0), p.1.wrapping_add(d.1))
 }
 
 impl Cycle {
@@ -107,7 +109,7 @@ impl Cycle {
             // G76.PATH / G92.PATH ①: rapid to the infeed point (to the lead-in point first).
             0 => {
                 let (x, z) = self.cut.p0;
-                Some(Move::rapid(x.saturating_add(p.leadin), z, p.rule_path))
+                Some(Move::rapid(x.wrapping_add(p.leadin), z, p.rule_path))
             }
             // G76.LEADIN: synchronized X move from the lead-in point to Bn.
             1 if p.leadin != 0 => thread(self.cut.p0, Rule::G76LeadIn),
@@ -219,11 +221,14 @@ impl Cycle {
         if let Some(h) = self.take_header() {
             put(h);
         }
+        // The position in a local: stored once, not after every move.
+        let mut at = *pos;
         for step in 0..STEPS {
-            if let Some(e) = self.move_at(step).and_then(|m| emit(m, pos)) {
+            if let Some(e) = self.move_at(step).and_then(|m| emit(m, &mut at)) {
                 put(e);
             }
         }
+        *pos = at;
         self.step = STEPS;
         n
     }

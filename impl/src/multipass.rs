@@ -135,12 +135,12 @@ impl Multi {
 
     /// G76.INFEED.X, G76.INFEED.Z, G76.PATH: the cut of a pass at radius depth δ with Z offset
     /// `off`: from (B.x − 2s·δ, A.z + σ·off), travelling (−2i, W). Legal words keep every term
-    /// below 2^40 (lengths ≤ 10^9, tan(a/2) ≤ 57): the 64-bit arithmetic is exact, saturating
-    /// only keeps an illegal value from wrapping.
+    /// below 2^40 (lengths ≤ 10^9, tan(a/2) ≤ 57): the 64-bit arithmetic is exact and never
+    /// wraps; wrapping operations keep an impossible overflow from panicking.
     fn cut(&self, depth: i64, off: i64) -> Cut {
-        let x = self.bx.saturating_add(self.x_per_depth.saturating_mul(depth));
-        let z = self.az.saturating_add(self.sigma.saturating_mul(off));
-        Cut { p0: (x, z), end: (x.saturating_add(self.taper), z.saturating_add(self.w)) }
+        let x = self.bx.wrapping_add(self.x_per_depth.wrapping_mul(depth));
+        let z = self.az.wrapping_add(self.sigma.wrapping_mul(off));
+        Cut { p0: (x, z), end: (x.wrapping_add(self.taper), z.wrapping_add(self.w)) }
     }
 
     /// The cut of rough pass `r` (G76.DEPTH.*, G76.MODE, G78.MODE).
