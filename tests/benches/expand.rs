@@ -50,8 +50,9 @@ fn g76(target_passes: u32) -> Case {
 }
 
 /// G76 with a minimum cut that is never reached (Δd = 0.2, Δdmin = 0.001: the switch of
-/// G76.DEPTH.MIN would come after pass 10 000): every one of the ~9 900 rough passes takes the
-/// switch test and a square root — the costliest pass change of a single-start cycle.
+/// G76.DEPTH.MIN would come after pass 10 000): the root grows by more than one increment per
+/// pass, so every one of the ~9 900 rough passes takes a square root (its guess fails) — the
+/// costliest pass change of a single-start cycle.
 fn g76_min_cut_unreached() -> Case {
     let p = "G0 X80 Z5\nG76 P011060 Q0.001 R0.1\nG76 X27.4 Z-20 P20.0 Q0.2 F2\n";
     Case { name: "g76/9900_min_cut_unreached".into(), program: p.into(), config: Config::default() }
