@@ -299,8 +299,8 @@ pub fn tan_half_degrees(h: u32) -> Option<(u8, u128)> {
     TAN_TABLE.get(usize::try_from(h).ok()?).copied()
 }
 
-/// tan(h · 0.5°) from [`TAN_TABLE`], looked up once where many depths are multiplied by it
-/// (G76.INFEED.Z: every pass).
+/// tan(h · 0.5°) from the tangent table ([`tan_half_degrees`]), looked up once where many
+/// depths are multiplied by it (G76.INFEED.Z: every pass).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Tan {
     int: u8,
