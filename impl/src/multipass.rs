@@ -110,11 +110,10 @@ pub struct Multi {
     index: u32,
     /// B.x = C.x + 2·s·k, diameter: where a cut at depth 0 would start.
     bx: i64,
-    /// −2s: X on diameter per increment of radius depth (s the side, ±1).
-    x_per_depth: i64,
     /// A.z.
     az: i64,
-    /// σ = −s: Z per increment of the Z offset.
+    /// σ = −s (s the side, ±1): the sign of the infeed's Z offset, and of X on radius per
+    /// increment of depth.
     sigma: i64,
     k: i64,
     /// −2·R(i): the cut's X travel on diameter.
@@ -134,11 +133,11 @@ impl Multi {
     }
 
     /// G76.INFEED.X, G76.INFEED.Z, G76.PATH: the cut of a pass at radius depth δ with Z offset
-    /// `off`: from (B.x − 2s·δ, A.z + σ·off), travelling (−2i, W). Legal words keep every term
+    /// `off`: from (B.x + 2σ·δ, A.z + σ·off), travelling (−2i, W). Legal words keep every term
     /// below 2^40 (lengths ≤ 10^9, tan(a/2) ≤ 57): the 64-bit arithmetic is exact and never
     /// wraps; wrapping operations keep an impossible overflow from panicking.
     fn cut(&self, depth: i64, off: i64) -> Cut {
-        let x = self.bx.wrapping_add(self.x_per_depth.wrapping_mul(depth));
+        let x = self.bx.wrapping_add(self.sigma.wrapping_mul(depth).wrapping_mul(2));
         let z = self.az.wrapping_add(self.sigma.wrapping_mul(off));
         Cut { p0: (x, z), end: (x.wrapping_add(self.taper), z.wrapping_add(self.w)) }
     }
@@ -268,7 +267,6 @@ pub fn cycle(
         m: first.m,
         index: 0,
         bx: sat(bx),
-        x_per_depth: -2 * s,
         az: a.1,
         sigma: -s,
         k: sec.k,
