@@ -438,7 +438,7 @@ impl Machine {
         };
         st.index = st.index.saturating_add(1);
         let st = *st;
-        // A `match`, not `?`: `?` copies the 256-byte cycle once more on its way out.
+        // A `match`, not `?`: `?` copies the cycle (~300 bytes) once more on its way out.
         match g92::cycle(&self.config, &st, self.pos, lead, line) {
             Ok(c) => *action = Action::Cycle(c),
             Err(a) => return Err(a),
