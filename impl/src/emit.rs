@@ -183,17 +183,8 @@ impl Cycle {
     #[inline]
     pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> (usize, bool) {
         let mut n = 0;
-        loop {
-            if self.step >= STEPS && !self.next_start() {
-                return (n, true);
-            }
-            if self.step == 0 {
-                let room = out.get_mut(n..n.saturating_add(START_EVENTS));
-                if let Some(slots) = room.and_then(|r| <&mut [Event; START_EVENTS]>::try_from(r).ok()) {
-                    n += self.write_start(pos, slots);
-                    continue;
-                }
-            }
+        // A start begun by `next_event` is finished one event at a time.
+        while self.step != 0 && self.step < STEPS {
             let Some(slot) = out.get_mut(n) else {
                 return (n, false);
             };
@@ -205,6 +196,31 @@ impl Cycle {
                 None => return (n, true),
             }
         }
+        // Whole starts, the position kept in a local.
+        let mut at = *pos;
+        let mut done = false;
+        while let Some(slots) = out.get_mut(n..).and_then(|r| r.first_chunk_mut::<START_EVENTS>()) {
+            if self.step >= STEPS && !self.next_start() {
+                done = true;
+                break;
+            }
+            n += self.write_start(&mut at, slots);
+        }
+        *pos = at;
+        if done {
+            return (n, true);
+        }
+        // Less room than a start: one event at a time.
+        while let Some(slot) = out.get_mut(n) {
+            match self.next_event(pos) {
+                Some(e) => {
+                    *slot = e;
+                    n += 1;
+                }
+                None => return (n, true),
+            }
+        }
+        (n, false)
     }
 
     /// Writes the pending pass header and the moves of the current start into `slots`; returns
@@ -221,14 +237,11 @@ impl Cycle {
         if let Some(h) = self.take_header() {
             put(h);
         }
-        // The position in a local: stored once, not after every move.
-        let mut at = *pos;
         for step in 0..STEPS {
-            if let Some(e) = self.move_at(step).and_then(|m| emit(m, &mut at)) {
+            if let Some(e) = self.move_at(step).and_then(|m| emit(m, pos)) {
                 put(e);
             }
         }
-        *pos = at;
         self.step = STEPS;
         n
     }
