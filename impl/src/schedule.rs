@@ -223,26 +223,35 @@ fn switch_test(a: u128, c: u128, m: u64) -> bool {
     }
 }
 
+/// The most candidates [`root`] checks, from its guess upward, before it takes the square root.
+const ROOT_WALK: u32 = 4;
+
 /// round(√v), half up (`fixed::sqrt_round`). From one pass to the next the root grows by
-/// Δd·(√n − √(n−1)) ≤ Δd / (2√(n−1)), so for most passes it is `hint` or `hint + 1`: each is
-/// checked exactly (round(√v) = c ⇔ c² − c < v ≤ c² + c) before the root is taken.
+/// Δd·(√n − √(n−1)) ≤ Δd / (2√(n−1)), so for most passes it is within a few increments above
+/// the previous depth, `hint`: the candidates `hint`, `hint + 1`, … are checked exactly
+/// (round(√v) = c ⇔ c² − c < v ≤ c² + c), at most [`ROOT_WALK`] of them, before the root is
+/// taken. Walking up, the first c with v ≤ c² + c is the root if c² − c < v holds for it;
+/// otherwise the guess was above the root. A guess from 2^63 on is not walked.
 fn root(v: u128, hint: u64) -> u64 {
     if cfg!(feature = "planted-depth-bug") {
         return planted_root(v);
     }
-    // c < 2^64: c² + c ≤ 2^128 − 2^64, no overflow; c² ≥ c, no underflow.
-    let rounds_to = |c: u64| {
-        let (c, sq) = (u128::from(c), u128::from(c) * u128::from(c));
-        sq - c < v && v <= sq + c
-    };
-    if rounds_to(hint) {
-        hint
-    } else if rounds_to(hint.saturating_add(1)) {
-        hint + 1
-    } else {
-        // v < 2^128: the root is at most 2^64 − 1 (rounded half up, still below 2^64 + 1).
-        u64::try_from(sqrt_round(v)).unwrap_or(u64::MAX)
+    // Guesses below 2^63 (every depth of legal words is below 2^40): no candidate overflows
+    // (c² + c < 2^127).
+    if hint < 1 << 63 {
+        for c in hint..hint + u64::from(ROOT_WALK) {
+            let (cc, sq) = (u128::from(c), u128::from(c) * u128::from(c));
+            if v <= sq + cc {
+                // The first candidate with v ≤ c² + c: the root, or the guess was above it.
+                if sq - cc < v {
+                    return c;
+                }
+                break;
+            }
+        }
     }
+    // v < 2^128: the root is at most 2^64 − 1 (rounded half up, still below 2^64 + 1).
+    u64::try_from(sqrt_round(v)).unwrap_or(u64::MAX)
 }
 
 /// TEST AID, never for production, used only with the feature `planted-depth-bug` (off by
@@ -277,7 +286,8 @@ mod tests {
 
     /// G76.DEPTH.1: the guess only saves work — any guess gives the exact rounded root, also
     /// one far from it (the guess is checked, not trusted). Every v ≤ 20 000 with every guess
-    /// up to √v + 3; large v (up to 2^126) with guesses around the root and at the extremes.
+    /// up to √v + 3; large v (up to 2^126) with guesses within and just beyond the walk
+    /// below the root, above it, and at the extremes; the largest root from guesses about 2^63.
     #[test]
     #[cfg(not(feature = "planted-depth-bug"))]
     fn root_with_any_guess_is_the_rounded_root() {
@@ -293,18 +303,23 @@ mod tests {
             let x = xorshift(&mut s);
             let v = (u128::from(x) << 62 ^ u128::from(x.rotate_left(17))) >> (x % 64);
             let e = exact(v);
-            for hint in [e.saturating_sub(2), e - e.min(1), e, e + 1, e + 2, 0, u64::MAX] {
+            let below = (1..=ROOT_WALK + 1).map(|k| e.saturating_sub(u64::from(k)));
+            for hint in below.chain([e, e + 1, e + 2, 0, u64::MAX]) {
                 assert_eq!(root(v, hint), e, "v = {v}, guess {hint}");
             }
         }
         // The edges of the rounding: r² − r + 1 and r² + r round to r; r² + r + 1 to r + 1.
         for r in [1u64, 2, 3, 1_000, 1 << 40, (1 << 63) - 1] {
             let (rr, sq) = (u128::from(r), u128::from(r) * u128::from(r));
-            for hint in [r - 1, r, r + 1] {
+            for hint in [r - 1, r, r + 1, r.saturating_sub(3), r.saturating_sub(4)] {
                 assert_eq!(root(sq - rr + 1, hint), r);
                 assert_eq!(root(sq + rr, hint), r);
                 assert_eq!(root(sq + rr + 1, hint), r + 1);
             }
+        }
+        let (top, m) = (u128::from(u64::MAX), u64::MAX);
+        for hint in [m - 4, m - 3, m - 1, m, (1 << 63) - 1, 1 << 63] {
+            assert_eq!(root(top * top + top, hint), m);
         }
     }
 

@@ -30,9 +30,10 @@
 //! and for monotonicity. Hence every reachable pass equals the closed form, and every step of
 //! every schedule is monotone — for all n, not only the first few.
 //!
-//! **Kani bounds.** Everything is symbolic over the full legal ranges. The only loop is the
+//! **Kani bounds.** Everything is symbolic over the full legal ranges. The loops are the
 //! switch pass's binary search in `cycle_impl::schedule` (at most 33 iterations, and only for
-//! words beyond 2^31), so `#[kani::unwind(65)]`. Our own model is loop-free.
+//! words beyond 2^31) and the root's walk over at most 4 candidates, so `#[kani::unwind(65)]`.
+//! Our own model is loop-free.
 
 use crate::model::{depth_square, is_sqrt_round, sqrt_round_at_least, switch_pass};
 use crate::schedule::Schedule;

@@ -34,7 +34,8 @@
 //! **Kani bounds** ([`KANI`]): lengths ≤ 9 increments, leads ≤ 9 counts, `max_passes` ≤ 3,
 //! L ≤ 2, m ≤ 2; the program is at most [`KANI_PROGRAM`] = 110 bytes (checked by the body in
 //! every driver). Loops: the lexer's byte loops ≤ 111, our event loop ≤ 7·3 + 2 = 23, digit loops
-//! ≤ 20, the switch-pass search ≤ 33 (`isqrt` is loop-free), the configuration check 15.
+//! ≤ 20, the switch-pass search ≤ 33, the root's walk ≤ 4 (`isqrt` is loop-free), the
+//! configuration check 15.
 //! So `#[kani::unwind(112)]`.
 
 use crate::program::Program;
