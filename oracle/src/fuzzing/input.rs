@@ -21,7 +21,7 @@ use cycle_vocab::{Config, Dialect, Grid, Increment, Units};
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum CycleInput {
     Built { family: Family, knobs: Vec<u32> },
-    /// A program under the configuration of [`literal_config`] `config`.
+    /// A program under the configuration of `literal_config` `config`.
     Literal { config: u8, program: Vec<u8> },
 }
 
