@@ -231,19 +231,20 @@ const ROOT_WALK: u32 = 4;
 /// the previous depth, `hint`: the candidates `hint`, `hint + 1`, … are checked exactly
 /// (round(√v) = c ⇔ c² − c < v ≤ c² + c), at most [`ROOT_WALK`] of them, before the root is
 /// taken. Walking up, the first c with v ≤ c² + c is the root if c² − c < v holds for it;
-/// otherwise the guess was above the root. A guess from 2^63 on is not walked.
+/// otherwise the guess was above the root. The walk is in 64 bits: a guess from 2^31 on, or
+/// v from 2^64 on (words beyond the legal ranges), goes straight to the square root.
 fn root(v: u128, hint: u64) -> u64 {
     if cfg!(feature = "planted-depth-bug") {
         return planted_root(v);
     }
-    // Guesses below 2^63 (every depth of legal words is below 2^40): no candidate overflows
-    // (c² + c < 2^127).
-    if hint < 1 << 63 {
+    // Guesses below 2^31 and v below 2^64 (every legal word: depths below 2^30, so
+    // v = n·Δd² ≤ T·(T − 1) < 2^60): each candidate is checked in 64 bits (c² + c < 2^63).
+    if let (Ok(v), true) = (u64::try_from(v), hint < 1 << 31) {
         for c in hint..hint + u64::from(ROOT_WALK) {
-            let (cc, sq) = (u128::from(c), u128::from(c) * u128::from(c));
-            if v <= sq + cc {
+            let sq = c * c;
+            if v <= sq + c {
                 // The first candidate with v ≤ c² + c: the root, or the guess was above it.
-                if sq - cc < v {
+                if sq - c < v {
                     return c;
                 }
                 break;
@@ -287,7 +288,8 @@ mod tests {
     /// G76.DEPTH.1: the guess only saves work — any guess gives the exact rounded root, also
     /// one far from it (the guess is checked, not trusted). Every v ≤ 20 000 with every guess
     /// up to √v + 3; large v (up to 2^126) with guesses within and just beyond the walk
-    /// below the root, above it, and at the extremes; the largest root from guesses about 2^63.
+    /// below the root, above it, and at the extremes; the largest root from guesses about 2^63;
+    /// the 64-bit walk's edges (guesses about 2^31, v about 2^64).
     #[test]
     #[cfg(not(feature = "planted-depth-bug"))]
     fn root_with_any_guess_is_the_rounded_root() {
@@ -320,6 +322,21 @@ mod tests {
         let (top, m) = (u128::from(u64::MAX), u64::MAX);
         for hint in [m - 4, m - 3, m - 1, m, (1 << 63) - 1, 1 << 63] {
             assert_eq!(root(top * top + top, hint), m);
+        }
+        // The 64-bit walk's edges: guesses about 2^31 (c² + c near 2^62), v about 2^64.
+        for r in [(1u64 << 31) - 2, (1 << 31) - 1, 1 << 31, (1 << 31) + 1, (1 << 32) - 1, 1 << 32] {
+            let (rr, sq) = (u128::from(r), u128::from(r) * u128::from(r));
+            for v in [sq - rr + 1, sq, sq + rr, sq + rr + 1] {
+                for hint in [r - 3, r - 1, r, r + 1] {
+                    assert_eq!(root(v, hint), exact(v), "v = {v}, guess {hint}");
+                }
+            }
+        }
+        for v in [u128::from(u64::MAX) - 1, u128::from(u64::MAX), 1 << 64, (1 << 64) + 1] {
+            let e = exact(v);
+            for hint in [e - 2, e - 1, e] {
+                assert_eq!(root(v, hint), e, "v = {v}, guess {hint}");
+            }
         }
     }
 
