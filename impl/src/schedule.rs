@@ -54,6 +54,8 @@ pub struct Rough {
 pub struct Schedule {
     /// Δd ≥ 1.
     dd: u64,
+    /// Δd² (< 2^126), the step of G76.DEPTH.1's radicand n·Δd².
+    dd2: u128,
     /// Δdmin ≥ 0.
     dmin: u64,
     /// T ≥ 1.
@@ -89,7 +91,7 @@ impl Schedule {
             (t * (t - 1) / (d * d) + 1, switch_pass(dd, dmin))
         };
         let reach = u64::try_from(reach).unwrap_or(REACH_CAP).min(REACH_CAP);
-        Schedule { dd, dmin, target, reach, switch, constant: p.constant }
+        Schedule { dd, dd2: d * d, dmin, target, reach, switch, constant: p.constant }
     }
 
     /// The first rough pass (G76.DEPTH.1; G76.DEPTH.MIN when Δd < Δdmin; G78.DEPTHMODE).
@@ -124,13 +126,12 @@ impl Schedule {
         if at >= self.reach {
             return self.clamp(n, u128::from(self.target), Rule::G76DepthLast);
         }
-        let d = u128::from(self.dd);
         if self.constant {
             // G78.DEPTHMODE 0; n < reach: n·Δd < T.
-            return self.clamp(n, u128::from(n) * d, Rule::G78DepthMode);
+            return self.clamp(n, u128::from(n) * u128::from(self.dd), Rule::G78DepthMode);
         }
         // G76.DEPTH.1; n < reach: n·Δd² ≤ T·(T − 1) < 2^126.
-        self.clamp(n, u128::from(root(u128::from(n) * (d * d), before)), Rule::G76Depth1)
+        self.clamp(n, u128::from(root(u128::from(n) * self.dd2, before)), Rule::G76Depth1)
     }
 
     /// Clamps a rounded depth to the target (G76.DEPTH.LAST) and builds the pass.
