@@ -171,7 +171,8 @@ impl<'a> Blocks<'a> {
         }
     }
 
-    /// Reads the number after an address letter: `[+-]digits[.digits]` or `[+-].digits`.
+    /// Reads the number after an address letter: `[+-]digits[.digits]` or `[+-].digits`, with
+    /// at most [`MAX_DIGITS`] significant digits (from the first nonzero one) and decimals.
     fn number(&mut self, letter: u8) -> Result<Number, Alarm> {
         self.skip_blanks();
         let mut n = Number { negative: false, mantissa: 0, decimals: 0, point: false };
@@ -179,35 +180,45 @@ impl<'a> Blocks<'a> {
             n.negative = sign == b'-';
             self.pos += 1;
         }
-        let mut digits = 0u32;
         let mut significant = 0u32;
-        while let Some(b) = self.peek() {
-            match b {
-                b'0'..=b'9' => {
-                    digits += 1;
-                    if significant > 0 || b != b'0' {
-                        significant += 1;
-                    }
-                    if significant > MAX_DIGITS || (n.point && n.decimals as u32 >= MAX_DIGITS) {
-                        return Err(self.alarm(AlarmCode::BadNumber, Some(letter)));
-                    }
-                    n.mantissa = n.mantissa * 10 + u64::from(b - b'0');
-                    if n.point {
-                        n.decimals += 1;
-                    }
-                }
-                b'.' if !n.point => n.point = true,
-                _ => break,
-            }
+        let mut digits = self.digit_run(&mut n.mantissa, &mut significant);
+        let mut decimals = 0;
+        if self.peek() == Some(b'.') {
+            n.point = true;
             self.pos += 1;
+            decimals = self.digit_run(&mut n.mantissa, &mut significant);
+            digits = digits.saturating_add(decimals);
         }
-        if digits == 0 {
+        if digits == 0 || significant > MAX_DIGITS || decimals > MAX_DIGITS {
             return Err(self.alarm(AlarmCode::BadNumber, Some(letter)));
         }
+        // decimals ≤ MAX_DIGITS (18), and at most 18 significant digits: the mantissa is exact.
+        n.decimals = decimals as u8;
         if n.mantissa == 0 {
             n.negative = false;
         }
         Ok(n)
+    }
+
+    /// Reads a run of digits onto `mantissa` (× 10 + digit); returns how many were read, and
+    /// adds those from the number's first nonzero digit on to `significant`. Beyond
+    /// [`MAX_DIGITS`] significant digits the mantissa wraps, and the number is refused.
+    fn digit_run(&mut self, mantissa: &mut u64, significant: &mut u32) -> u32 {
+        let start = self.pos;
+        if *significant == 0 {
+            // Zeros before the number's first nonzero digit: not significant, nothing to add.
+            while self.peek() == Some(b'0') {
+                self.pos += 1;
+            }
+        }
+        let from = self.pos;
+        while let Some(d) = self.peek().map(|b| b.wrapping_sub(b'0')).filter(|&d| d <= 9) {
+            *mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(d));
+            self.pos += 1;
+        }
+        let count = |since: usize| u32::try_from(self.pos - since).unwrap_or(u32::MAX);
+        *significant = significant.saturating_add(count(from));
+        count(start)
     }
 
     fn comment(&mut self) -> Result<(), Alarm> {
@@ -357,6 +368,88 @@ mod tests {
         assert_eq!(b.get(b'Z').unwrap(), Number { negative: false, mantissa: 0, decimals: 0, point: false });
         assert_eq!(b.get(b'U').unwrap(), Number { negative: false, mantissa: 3, decimals: 0, point: true });
         assert_eq!(b.get(b'W').unwrap(), Number { negative: false, mantissa: 1234500, decimals: 4, point: true });
+    }
+
+    /// The number reader as first written, one digit at a time with every check per digit:
+    /// the reference for the run-based reader. `Ok` with the bytes read, or `Err` (BadNumber).
+    fn number_by_digit(src: &[u8]) -> Result<(Number, usize), ()> {
+        let mut pos = src.iter().take_while(|&&b| matches!(b, b' ' | b'\t' | b'\r' | b'%')).count();
+        let mut n = Number { negative: false, mantissa: 0, decimals: 0, point: false };
+        if let Some(&sign @ (b'+' | b'-')) = src.get(pos) {
+            n.negative = sign == b'-';
+            pos += 1;
+        }
+        let (mut digits, mut significant) = (0u32, 0u32);
+        while let Some(&b) = src.get(pos) {
+            match b {
+                b'0'..=b'9' => {
+                    digits += 1;
+                    if significant > 0 || b != b'0' {
+                        significant += 1;
+                    }
+                    if significant > MAX_DIGITS || (n.point && n.decimals as u32 >= MAX_DIGITS) {
+                        return Err(());
+                    }
+                    n.mantissa = n.mantissa * 10 + u64::from(b - b'0');
+                    if n.point {
+                        n.decimals += 1;
+                    }
+                }
+                b'.' if !n.point => n.point = true,
+                _ => break,
+            }
+            pos += 1;
+        }
+        if digits == 0 {
+            return Err(());
+        }
+        if n.mantissa == 0 {
+            n.negative = false;
+        }
+        Ok((n, pos))
+    }
+
+    /// PRJ.LEX: the run-based number reader reads what the digit-by-digit one reads — the same
+    /// number and the same bytes, or BadNumber — over random strings of signs, points, blanks
+    /// and digits (runs of zeros and of 18–20 significant digits, up to 44 characters).
+    #[test]
+    fn numbers_read_as_digit_by_digit() {
+        let mut state = 0x0dd_b1a5_e5u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let pieces: [&[u8]; 12] =
+            [b"0", b"00000000", b"1", b"9", b"123456789", b"999999999", b".", b"-", b"+", b" ", b"5", b"X"];
+        for _ in 0..200_000 {
+            let mut text = [0u8; 48];
+            let mut len = 0;
+            for _ in 0..next() % 7 {
+                let piece = pieces[(next() % 12) as usize];
+                if len + piece.len() > 44 {
+                    break;
+                }
+                text[len..len + piece.len()].copy_from_slice(piece);
+                len += piece.len();
+            }
+            let src = &text[..len];
+            let mut reader = Blocks::new(src);
+            let read = reader.number(b'X').map(|n| (n, reader.pos));
+            let want = number_by_digit(src)
+                .map_err(|()| Alarm::new(AlarmCode::BadNumber, Some(b'X'), Rule::PrjLex, 1));
+            assert_eq!(read, want, "{:?}", core::str::from_utf8(src));
+        }
+        for (text, mantissa, decimals) in
+            [("0.000000000000000001", 1, 18), ("000123456789012345678", 123_456_789_012_345_678, 0)]
+        {
+            let n = Blocks::new(text.as_bytes()).number(b'X').unwrap();
+            assert_eq!((n.mantissa, n.decimals), (mantissa, decimals));
+        }
+        for text in ["0.0000000000000000001", "1234567890123456789", "1.234567890123456789", "."] {
+            assert!(Blocks::new(text.as_bytes()).number(b'X').is_err(), "{text}");
+        }
     }
 
     #[test]
