@@ -414,7 +414,7 @@ mod tests {
     /// and digits (runs of zeros and of 18–20 significant digits, up to 44 characters).
     #[test]
     fn numbers_read_as_digit_by_digit() {
-        let mut state = 0x0dd_b1a5_e5u64;
+        let mut state = 0x0000_ddb1_a5e5_u64;
         let mut next = || {
             state ^= state << 13;
             state ^= state >> 7;
