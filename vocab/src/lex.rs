@@ -370,6 +370,14 @@ mod tests {
         assert_eq!(b.get(b'W').unwrap(), Number { negative: false, mantissa: 1234500, decimals: 4, point: true });
     }
 
+    /// The tests' random source (xorshift64).
+    fn xorshift(state: &mut u64) -> u64 {
+        *state ^= *state << 13;
+        *state ^= *state >> 7;
+        *state ^= *state << 17;
+        *state
+    }
+
     /// The number reader as first written, one digit at a time with every check per digit:
     /// the reference for the run-based reader. `Ok` with the bytes read, or `Err` (BadNumber).
     fn number_by_digit(src: &[u8]) -> Result<(Number, usize), ()> {
@@ -415,12 +423,7 @@ mod tests {
     #[test]
     fn numbers_read_as_digit_by_digit() {
         let mut state = 0x0000_ddb1_a5e5_u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = || xorshift(&mut state);
         let pieces: [&[u8]; 12] =
             [b"0", b"00000000", b"1", b"9", b"123456789", b"999999999", b".", b"-", b"+", b" ", b"5", b"X"];
         for _ in 0..200_000 {
@@ -458,10 +461,7 @@ mod tests {
         for _ in 0..2000 {
             let mut buf = [0u8; 64];
             for b in buf.iter_mut() {
-                state ^= state << 13;
-                state ^= state >> 7;
-                state ^= state << 17;
-                *b = (state >> 24) as u8;
+                *b = (xorshift(&mut state) >> 24) as u8;
             }
             for r in Blocks::new(&buf) {
                 let _ = r;
