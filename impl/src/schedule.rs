@@ -84,14 +84,15 @@ impl Schedule {
         let dmin = p.min_cut.max(0).unsigned_abs();
         let target = p.target.max(1).unsigned_abs();
         let (t, d) = (u128::from(target), u128::from(dd));
+        // T < 2^63 and Δd < 2^63: T·(T − 1) and Δd² are below 2^126.
+        let dd2 = d * d;
         let (reach, switch) = if p.constant {
             (t.div_ceil(d), NEVER)
         } else {
-            // T < 2^63 and Δd < 2^63: T·(T − 1) and Δd² are below 2^126.
-            (t * (t - 1) / (d * d) + 1, switch_pass(dd, dmin))
+            (t * (t - 1) / dd2 + 1, switch_pass(dd, dmin))
         };
         let reach = u64::try_from(reach).unwrap_or(REACH_CAP).min(REACH_CAP);
-        Schedule { dd, dd2: d * d, dmin, target, reach, switch, constant: p.constant }
+        Schedule { dd, dd2, dmin, target, reach, switch, constant: p.constant }
     }
 
     /// The first rough pass (G76.DEPTH.1; G76.DEPTH.MIN when Δd < Δdmin; G78.DEPTHMODE).
@@ -157,7 +158,7 @@ impl Schedule {
             // s ≤ reach: (s − 1)·Δd² ≤ T·(T − 1) < 2^126; the depth of pass s − 1 is below T,
             // and Δdmin ≥ 1 because a switch exists.
             let s = u128::from(self.switch);
-            let before = sqrt_round((s - 1) * u128::from(self.dd) * u128::from(self.dd));
+            let before = sqrt_round((s - 1) * self.dd2);
             (s - 1) + (u128::from(self.target) - before).div_ceil(u128::from(self.dmin.max(1)))
         };
         u32::try_from(count).ok().filter(|&c| c <= limit)
