@@ -2,7 +2,7 @@
 
 use crate::fixed::sat;
 use crate::emit::{Cut, Cycle, Path, Plan};
-use crate::pullout::{g92_amounts, offsets, tenths_of_lead, travel};
+use crate::pullout::{g92_amounts, offsets, tenths_of_lead, travel, Amounts, Offsets};
 use cycle_vocab::{Alarm, AlarmCode, Config, Pass, PassKind, Rule};
 
 /// G92.MODAL: what a run keeps (end point, R, cycle count) and what the program keeps
@@ -36,10 +36,52 @@ impl G92State {
     }
 }
 
+/// The pull-out of the last G92 cycle with what it was made from. A modal run repeats it block
+/// after block (only X changes), so its two divisions are done once per change of its inputs:
+/// the lead, J, K, W, R and the side. The configuration (No.19, the grid) is the machine's and
+/// fixed for the program.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct PullMemo {
+    made_from: Option<PullInputs>,
+    amounts: Option<Amounts>,
+    offsets: Option<Offsets>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct PullInputs {
+    lead: i64,
+    j: Option<i64>,
+    k: Option<i64>,
+    w: i64,
+    r: i64,
+    s: i64,
+}
+
+impl PullMemo {
+    /// G92.JK.1–7 amounts (No.19 of the lead where J or K is omitted) and the G92.PULLOUT
+    /// offsets for these inputs: the kept ones when the inputs are the last cycle's.
+    fn get(&mut self, config: &Config, inputs: PullInputs) -> (Option<Amounts>, Option<Offsets>) {
+        if self.made_from != Some(inputs) {
+            let c = tenths_of_lead(config.params.no19_pullout, inputs.lead, config.grid);
+            let amounts = g92_amounts(inputs.j, inputs.k, c);
+            let offsets = amounts.map(|am| offsets(am, inputs.w, inputs.r, inputs.s));
+            *self = PullMemo { made_from: Some(inputs), amounts, offsets };
+        }
+        (self.amounts, self.offsets)
+    }
+}
+
 /// One G92 cycle from `a` with the run's values: checks in the register's order — W = 0
 /// (G92.FORMAT), taper (G92.TAPER), side (COM.SIDE), No.107 (G92.JK.8), K against the long-axis
 /// travel (G92.PULLOUT), pass bound (PRJ.MAXPASS) — then the cycle (G92.PATH).
-pub fn cycle(config: &Config, st: &G92State, a: (i64, i64), lead: i64, line: u32) -> Result<Cycle, Alarm> {
+pub fn cycle(
+    config: &Config,
+    st: &G92State,
+    pull: &mut PullMemo,
+    a: (i64, i64),
+    lead: i64,
+    line: u32,
+) -> Result<Cycle, Alarm> {
     let alarm = |code: AlarmCode, word: Option<u8>, rule: Rule| Alarm::new(code, word, rule, line);
     let d = st.end;
     let r = st.r;
@@ -64,8 +106,8 @@ pub fn cycle(config: &Config, st: &G92State, a: (i64, i64), lead: i64, line: u32
     if config.params.no107_pullout_speed != 0 {
         return Err(alarm(AlarmCode::Unsupported, None, Rule::G92Jk8));
     }
-    let c = tenths_of_lead(config.params.no19_pullout, lead, config.grid);
-    let amounts = g92_amounts(st.j, st.k, c);
+    let s = sat(s);
+    let (amounts, pull) = pull.get(config, PullInputs { lead, j: st.j, k: st.k, w, r, s });
     if let Some(am) = amounts {
         if am.k.unsigned_abs() >= travel(w, r) {
             return Err(alarm(AlarmCode::Geometry, Some(b'K'), Rule::G92Pullout));
@@ -75,14 +117,13 @@ pub fn cycle(config: &Config, st: &G92State, a: (i64, i64), lead: i64, line: u32
     if st.starts > config.params.max_passes {
         return Err(alarm(AlarmCode::TooManyPasses, Some(b'L'), Rule::PrjMaxPass));
     }
-    let s = sat(s);
     let cx = sat(cx);
     let path = Path {
         a,
         lead,
         starts: st.starts.max(1),
         leadin: 0,
-        pull: amounts.map(|am| offsets(am, w, r, s)),
+        pull,
         rule_path: Rule::G92Path,
         rule_pull: Rule::G92Pullout,
     };

@@ -6,7 +6,7 @@
 use crate::fixed::sat;
 use crate::emit::Cycle;
 use crate::g162::{self, max_lead, SplitParams};
-use crate::g92::{self, G92State};
+use crate::g92::{self, G92State, PullMemo};
 use crate::multipass::{self, Code, FirstBlock, Second};
 use crate::thread_move::{thread_move, ThreadCode, ThreadWords, MAX_START_ANGLE};
 use crate::words::{
@@ -58,6 +58,8 @@ pub struct Machine {
     /// Modal feed / lead, lead counts (COM.LEAD).
     feed: Option<i64>,
     g92: G92State,
+    /// The last G92 cycle's pull-out, reused while its inputs stay the same.
+    g92_pull: PullMemo,
     g76: FirstBlock,
     g78: FirstBlock,
     /// NC201.ABSINC: G91 in force (`nc201` only).
@@ -121,6 +123,7 @@ impl Machine {
             mode: Mode::Rapid,
             feed: None,
             g92: G92State::new(),
+            g92_pull: PullMemo::default(),
             g76: FirstBlock::defaults(&config, Code::G76),
             g78: FirstBlock::defaults(&config, Code::G78),
             incremental: false,
@@ -439,7 +442,7 @@ impl Machine {
         st.index = st.index.saturating_add(1);
         let st = *st;
         // A `match`, not `?`: `?` copies the cycle (~300 bytes) once more on its way out.
-        match g92::cycle(&self.config, &st, self.pos, lead, line) {
+        match g92::cycle(&self.config, &st, &mut self.g92_pull, self.pos, lead, line) {
             Ok(c) => *action = Action::Cycle(c),
             Err(a) => return Err(a),
         }

@@ -79,6 +79,7 @@ pub const PROGRAMS: &[Program] = &[
     program!("tests/programs", "g92_internal", Gsk, Metric, [ComSide, G92Jk1, G92Pullout, G92Modal]),
     program!("tests/programs", "g92_inch", Gsk, Inch, [ComUnits, ComLead, G92Format]),
     program!("tests/programs", "g92_multistart", Gsk, Metric, [ComMultiStart, G92Format, G92Modal]),
+    program!("tests/programs", "g92_modal_pullout", Gsk, Metric, [G92Modal, G92Jk1, G92Jk3, G92Pullout, G92Taper, ComSide]),
     program!("tests/programs", "g76_taper", Gsk, Metric, [G76Format, G76Pullout, G76InfeedX, ComPoints]),
     program!("tests/programs", "g76_internal", Gsk, Metric, [ComSide, G76InfeedX, G76InfeedZ]),
     program!("tests/programs", "g76_inch", Gsk, Inch, [ComUnits, ComLead]),

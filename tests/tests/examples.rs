@@ -60,6 +60,7 @@ snapshot!(g92_taper, "../programs/g92_taper.nc", gsk());
 snapshot!(g92_internal, "../programs/g92_internal.nc", gsk());
 snapshot!(g92_inch, "../programs/g92_inch.nc", inch());
 snapshot!(g92_multistart, "../programs/g92_multistart.nc", gsk());
+snapshot!(g92_modal_pullout, "../programs/g92_modal_pullout.nc", gsk());
 snapshot!(g76_taper, "../programs/g76_taper.nc", gsk());
 snapshot!(g76_internal, "../programs/g76_internal.nc", gsk());
 snapshot!(g76_inch, "../programs/g76_inch.nc", inch());

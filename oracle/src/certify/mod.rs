@@ -670,7 +670,7 @@ mod tests {
         let (b, _) = case_list(&o);
         assert_eq!(a.iter().map(|p| &p.program).collect::<Vec<_>>(), b.iter().map(|p| &p.program).collect::<Vec<_>>());
         assert!(a.iter().all(|p| cycle(&p.program, &p.config) == "G92"));
-        assert_eq!(a.iter().filter(|p| matches!(p.origin, Origin::Corpus { .. })).count(), 5);
+        assert_eq!(a.iter().filter(|p| matches!(p.origin, Origin::Corpus { .. })).count(), 6);
         assert_eq!((fa.len(), fa[0].family, fa[0].drawn, fa[0].kept), (1, "g92", 20, 20));
         let other = Options { seed: 1, ..o };
         let (c, _) = case_list(&other);
