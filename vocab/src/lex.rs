@@ -298,6 +298,7 @@ impl Iterator for Blocks<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::xorshift;
 
     fn blocks(src: &str) -> Vec<Result<Block, Alarm>> {
         Blocks::new(src.as_bytes()).collect()
@@ -368,14 +369,6 @@ mod tests {
         assert_eq!(b.get(b'Z').unwrap(), Number { negative: false, mantissa: 0, decimals: 0, point: false });
         assert_eq!(b.get(b'U').unwrap(), Number { negative: false, mantissa: 3, decimals: 0, point: true });
         assert_eq!(b.get(b'W').unwrap(), Number { negative: false, mantissa: 1234500, decimals: 4, point: true });
-    }
-
-    /// The tests' random source (xorshift64).
-    fn xorshift(state: &mut u64) -> u64 {
-        *state ^= *state << 13;
-        *state ^= *state >> 7;
-        *state ^= *state << 17;
-        *state
     }
 
     /// The number reader as first written, one digit at a time with every check per digit:

@@ -21,6 +21,15 @@ pub mod units;
 #[cfg(feature = "std")]
 pub mod text;
 
+/// The unit tests' random source (xorshift64).
+#[cfg(test)]
+fn xorshift(state: &mut u64) -> u64 {
+    *state ^= *state << 13;
+    *state ^= *state >> 7;
+    *state ^= *state << 17;
+    *state
+}
+
 pub use alarm::{Alarm, AlarmCode};
 pub use lex::{letter_bit, letter_mask, Block, Blocks};
 pub use params::{Config, Dialect, Params};
