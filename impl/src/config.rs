@@ -1,41 +1,100 @@
-//! The configuration check before the first block (docs/INTERPRETATION.md, "The configuration
-//! is checked before the first block"): each bad value is `OUT OF RANGE` on line 0.
+//! The machine parameters: the expander's own defaults, and the configuration check before the
+//! first block (docs/INTERPRETATION.md, "Parameters and defaults" and "The configuration is
+//! checked before the first block"): each bad value is `OUT OF RANGE` on line 0.
 
 use crate::modal::FANUC_ANGLES;
-use cycle_vocab::params::MAX_LENGTH;
+use crate::words::MAX_LENGTH;
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Rule};
+
+/// The machine parameters in force: each value set in the configuration, else the default.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Params {
+    pub no19_pullout: u32,
+    pub no107_pullout_speed: u32,
+    pub no18_bit6_hold: u32,
+    pub p5130_chamfer: u32,
+    pub p5131_chamfer_angle: u32,
+    pub p5140_min_cut: i64,
+    pub p5141_finish_allowance: i64,
+    pub p5142_finish_passes: u32,
+    pub p5143_tool_angle: u32,
+    pub p5144_infeed_mode: u32,
+    pub p5145_depth_mode: u32,
+    pub max_passes: u32,
+    pub x_radius: u32,
+}
+
+/// The defaults this controller ships with.
+pub const DEFAULTS: Params = Params {
+    no19_pullout: 10,
+    no107_pullout_speed: 0,
+    no18_bit6_hold: 0,
+    p5130_chamfer: 10,
+    p5131_chamfer_angle: 45,
+    p5140_min_cut: 100,
+    p5141_finish_allowance: 100,
+    p5142_finish_passes: 1,
+    p5143_tool_angle: 60,
+    p5144_infeed_mode: 0,
+    p5145_depth_mode: 1,
+    max_passes: 10_000,
+    x_radius: 0,
+};
 
 fn out(word: Option<u8>, rule: Rule) -> Alarm {
     Alarm::new(AlarmCode::OutOfRange, word, rule, 0)
 }
 
+/// One parameter: the value set, else `default`, within `lo..=hi` (else `OUT OF RANGE` under
+/// `rule`).
+fn small(set: Option<i64>, default: u32, lo: u32, hi: u32, rule: Rule) -> Result<u32, Alarm> {
+    match set {
+        None => Ok(default),
+        Some(v) => u32::try_from(v).ok().filter(|v| (lo..=hi).contains(v)).ok_or(out(None, rule)),
+    }
+}
+
+/// A length parameter: the value set, else `default`, within 0…N.
+fn length(set: Option<i64>, default: i64, rule: Rule) -> Result<i64, Alarm> {
+    let v = set.unwrap_or(default);
+    if (0..=MAX_LENGTH).contains(&v) {
+        Ok(v)
+    } else {
+        Err(out(None, rule))
+    }
+}
+
 /// COM.RANGES, G92.JK.1, G92.JK.8, G92.HOLD, G76.PULLOUT, G76.DEFAULTS, G78.MODE,
 /// G78.DEPTHMODE, PRJ.MAXPASS, F76.FORMAT, NC201.XMODE: the configuration, in the register's
-/// order.
-pub fn check(c: &Config) -> Result<(), Alarm> {
+/// order; the parameters in force when it is legal.
+pub fn check(c: &Config) -> Result<Params, Alarm> {
     let p = &c.params;
-    let length = |v: i64| (0..=MAX_LENGTH).contains(&v);
-    let checks: [(bool, Option<u8>, Rule); 16] = [
-        (c.start_x.unsigned_abs() <= MAX_LENGTH.unsigned_abs(), Some(b'X'), Rule::ComRanges),
-        (c.start_z.unsigned_abs() <= MAX_LENGTH.unsigned_abs(), Some(b'Z'), Rule::ComRanges),
-        (p.no19_pullout <= 255, None, Rule::G92Jk1),
-        (p.no107_pullout_speed <= 999_999, None, Rule::G92Jk8),
-        (p.no18_bit6_hold <= 1, None, Rule::G92Hold),
-        (p.p5130_chamfer <= 99, None, Rule::G76Pullout),
-        ((1..=89).contains(&p.p5131_chamfer_angle), None, Rule::G76Pullout),
-        (length(p.p5140_min_cut), None, Rule::G76Defaults),
-        (length(p.p5141_finish_allowance), None, Rule::G76Defaults),
-        ((1..=99).contains(&p.p5142_finish_passes), None, Rule::G76Defaults),
-        (p.p5143_tool_angle <= 99, None, Rule::G76Defaults),
-        (p.p5144_infeed_mode <= 4, None, Rule::G78Mode),
-        (p.p5145_depth_mode <= 1, None, Rule::G78DepthMode),
-        ((1..=1_000_000).contains(&p.max_passes), None, Rule::PrjMaxPass),
-        (c.dialect != Dialect::Fanuc || FANUC_ANGLES.contains(&p.p5143_tool_angle), None, Rule::F76Format),
-        // Checked under every dialect, read only under nc201.
-        (p.x_radius <= 1, None, Rule::Nc201XMode),
-    ];
-    match checks.iter().find(|(ok, _, _)| !ok) {
-        Some(&(_, word, rule)) => Err(out(word, rule)),
-        None => Ok(()),
+    let d = DEFAULTS;
+    if c.start_x.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
+        return Err(out(Some(b'X'), Rule::ComRanges));
     }
+    if c.start_z.unsigned_abs() > MAX_LENGTH.unsigned_abs() {
+        return Err(out(Some(b'Z'), Rule::ComRanges));
+    }
+    let params = Params {
+        no19_pullout: small(p.no19_pullout, d.no19_pullout, 0, 255, Rule::G92Jk1)?,
+        no107_pullout_speed: small(p.no107_pullout_speed, d.no107_pullout_speed, 0, 999_999, Rule::G92Jk8)?,
+        no18_bit6_hold: small(p.no18_bit6_hold, d.no18_bit6_hold, 0, 1, Rule::G92Hold)?,
+        p5130_chamfer: small(p.p5130_chamfer, d.p5130_chamfer, 0, 99, Rule::G76Pullout)?,
+        p5131_chamfer_angle: small(p.p5131_chamfer_angle, d.p5131_chamfer_angle, 1, 89, Rule::G76Pullout)?,
+        p5140_min_cut: length(p.p5140_min_cut, d.p5140_min_cut, Rule::G76Defaults)?,
+        p5141_finish_allowance: length(p.p5141_finish_allowance, d.p5141_finish_allowance, Rule::G76Defaults)?,
+        p5142_finish_passes: small(p.p5142_finish_passes, d.p5142_finish_passes, 1, 99, Rule::G76Defaults)?,
+        p5143_tool_angle: small(p.p5143_tool_angle, d.p5143_tool_angle, 0, 99, Rule::G76Defaults)?,
+        p5144_infeed_mode: small(p.p5144_infeed_mode, d.p5144_infeed_mode, 0, 4, Rule::G78Mode)?,
+        p5145_depth_mode: small(p.p5145_depth_mode, d.p5145_depth_mode, 0, 1, Rule::G78DepthMode)?,
+        max_passes: small(p.max_passes, d.max_passes, 1, 1_000_000, Rule::PrjMaxPass)?,
+        x_radius: d.x_radius,
+    };
+    if c.dialect == Dialect::Fanuc && !FANUC_ANGLES.contains(&params.p5143_tool_angle) {
+        return Err(out(None, Rule::F76Format));
+    }
+    // Checked under every dialect, read only under nc201.
+    let x_radius = small(p.x_radius, d.x_radius, 0, 1, Rule::Nc201XMode)?;
+    Ok(Params { x_radius, ..params })
 }

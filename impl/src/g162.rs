@@ -8,6 +8,7 @@
 
 use crate::fixed::{isqrt, mul_wide, sat, Tan};
 use crate::emit::emit;
+use crate::config::Params;
 use cycle_vocab::{Alarm, AlarmCode, Config, Event, Move, Pass, PassKind, Rule, Units};
 
 /// The depth split of a multi-pass G162: P = thread depth, Q = allowance per pass (radius).
@@ -313,7 +314,7 @@ impl Cycle {
 /// Step 5 of the check order for G162 (docs/INTERPRETATION.md, "Cycle checks"): Ze = S.z
 /// (G162.FORMAT), V against the thread length (G162.V), side and retract side (G162.RETRACT),
 /// pass bound (PRJ.MAXPASS), growing-pitch bound (G162.I); then the cycle.
-pub fn cycle(config: &Config, w: &Words, start: (i64, i64), line: u32) -> Result<Cycle, Alarm> {
+pub fn cycle(config: &Config, params: &Params, w: &Words, start: (i64, i64), line: u32) -> Result<Cycle, Alarm> {
     let alarm = |code: AlarmCode, word: u8, rule: Rule| Alarm::new(code, Some(word), rule, line);
     let (sx, sz) = (i128::from(start.0), i128::from(start.1));
     // NC201.ABSINC: G91 values are distances from S.
@@ -342,7 +343,7 @@ pub fn cycle(config: &Config, w: &Words, start: (i64, i64), line: u32) -> Result
     // 5. The pass bound.
     let pass = match &w.split {
         Some(sp) => {
-            pass_count(sp, config.params.max_passes).ok_or(alarm(AlarmCode::TooManyPasses, b'Q', Rule::PrjMaxPass))?;
+            pass_count(sp, params.max_passes).ok_or(alarm(AlarmCode::TooManyPasses, b'Q', Rule::PrjMaxPass))?;
             first(sp)
         }
         None => Step { n: 1, depth: 0, last: true, rule: Rule::G162X, stage: 0 },

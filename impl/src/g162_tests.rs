@@ -121,7 +121,7 @@ fn g91_and_x_radius() {
     assert_eq!(absolute.alarm, None);
     let incremental = expand("G0 X30 Z5\nG91 G162 X-6 Z-25 H500 P1 Q0.4 W2 F1.5\n", nc201());
     assert_eq!(incremental, absolute);
-    let radius = with_params(Params { x_radius: 1, ..Params::default() });
+    let radius = with_params(Params { x_radius: Some(1), ..Params::default() });
     assert_eq!(expand("G0 X15 Z5\nG162 X12 Z-20 H500 P1 Q0.4 W1 F1.5\n", radius), absolute);
     assert_eq!(expand("G0 X15 Z5\nG91\nG162 X-3 Z-25 H500 P1 Q0.4 W1 F1.5\n", radius), absolute);
     // G91 stays modal for G00/G01; G90 restores absolute.
@@ -130,7 +130,7 @@ fn g91_and_x_radius() {
     assert_eq!(ends, [(10_000, 5_000), (10_000, 3_000), (6_000, 3_000), (3_000, 3_000)]);
     // Only nc201 reads x_radius: under gsk and fanuc X stays a diameter.
     for dialect in [Dialect::Gsk, Dialect::Fanuc] {
-        let cfg = Config { dialect, params: Params { x_radius: 1, ..Params::default() }, ..Config::default() };
+        let cfg = Config { dialect, params: Params { x_radius: Some(1), ..Params::default() }, ..Config::default() };
         let t = expand("G0 X15 Z5\nG1 X14 F1\n", cfg);
         assert_eq!((t.alarm, moves(&t).iter().map(|m| m.x).collect::<Vec<_>>()), (None, std::vec![15_000, 14_000]), "{dialect:?}");
     }
@@ -292,15 +292,15 @@ fn g162_check_order() {
         assert_eq!(alarm_of("G91 X1", c), al(AlarmCode::UnsupportedCode, b'G', Rule::PrjSupported, 1));
     }
     // PRJ.MAXPASS before any motion of the cycle: P2.5 Q1 is six passes.
-    let two = with_params(Params { max_passes: 5, ..Params::default() });
+    let two = with_params(Params { max_passes: Some(5), ..Params::default() });
     let t = expand("G0 X30 Z5\nG162 X24 Z-20 H500 P2.5 Q1 F1.5\n", two);
     assert_eq!(t.alarm, al(AlarmCode::TooManyPasses, b'Q', Rule::PrjMaxPass, 2));
     assert_eq!(t.events.len(), 1);
-    let six = with_params(Params { max_passes: 6, ..Params::default() });
+    let six = with_params(Params { max_passes: Some(6), ..Params::default() });
     assert_eq!(alarm_of("G0 X30 Z5\nG162 X24 Z-20 H500 P2.5 Q1 F1.5\n", six), None);
     // NC201.XMODE: x_radius is range-checked under every dialect.
     for dialect in [Dialect::Gsk, Dialect::Nc201] {
-        let bad = Config { dialect, params: Params { x_radius: 2, ..Params::default() }, ..Config::default() };
+        let bad = Config { dialect, params: Params { x_radius: Some(2), ..Params::default() }, ..Config::default() };
         assert_eq!(alarm_of("G0 X1\n", bad), Some(Alarm::new(AlarmCode::OutOfRange, None, Rule::Nc201XMode, 0)));
     }
 }
@@ -412,7 +412,7 @@ fn random_legal_g162_cycles() {
             lead(i),
             cycle_vocab::text::fixed(1 + (r() % 720_000) as i64, 3),
         );
-        let cfg = Config { grid, params: Params { x_radius, ..Params::default() }, ..nc201() };
+        let cfg = Config { grid, params: Params { x_radius: Some(x_radius as i64), ..Params::default() }, ..nc201() };
         let t = expand(&src, cfg);
         if let Some(al) = t.alarm {
             // Only the growing-pitch bound may refuse these programs.
@@ -470,8 +470,8 @@ fn no_panic_on_random_g162_and_thread_moves() {
                 increment: if r & 8 == 0 { Increment::Isb } else { Increment::Isc },
             },
             params: Params {
-                x_radius: (r >> 8) as u32 % 3,
-                max_passes: [1, 7, 10_000, 0][(r >> 12) as usize % 4],
+                x_radius: Some(((r >> 8) as u32 % 3) as i64),
+                max_passes: Some([1, 7, 10_000, 0][(r >> 12) as usize % 4]),
                 ..Params::default()
             },
             start_x: if r & 16 == 0 { 0 } else { extremes[(r >> 16) as usize % extremes.len()] },

@@ -3,6 +3,7 @@
 use crate::fixed::sat;
 use crate::emit::{Cut, Cycle, Path, Plan};
 use crate::pullout::{g92_amounts, offsets, tenths_of_lead, travel, Amounts, Offsets};
+use crate::config::Params;
 use cycle_vocab::{Alarm, AlarmCode, Config, Pass, PassKind, Rule};
 
 /// G92.MODAL: what a run keeps (end point, R, cycle count) and what the program keeps
@@ -60,9 +61,9 @@ struct PullInputs {
 impl PullMemo {
     /// G92.JK.1–7 amounts (No.19 of the lead where J or K is omitted) and the G92.PULLOUT
     /// offsets for these inputs: the kept ones when the inputs are the last cycle's.
-    fn get(&mut self, config: &Config, inputs: PullInputs) -> (Option<Amounts>, Option<Offsets>) {
+    fn get(&mut self, config: &Config, params: &Params, inputs: PullInputs) -> (Option<Amounts>, Option<Offsets>) {
         if self.made_from != Some(inputs) {
-            let c = tenths_of_lead(config.params.no19_pullout, inputs.lead, config.grid);
+            let c = tenths_of_lead(params.no19_pullout, inputs.lead, config.grid);
             let amounts = g92_amounts(inputs.j, inputs.k, c);
             let offsets = amounts.map(|am| offsets(am, inputs.w, inputs.r, inputs.s));
             *self = PullMemo { made_from: Some(inputs), amounts, offsets };
@@ -76,6 +77,7 @@ impl PullMemo {
 /// travel (G92.PULLOUT), pass bound (PRJ.MAXPASS) — then the cycle (G92.PATH).
 pub fn cycle(
     config: &Config,
+    params: &Params,
     st: &G92State,
     pull: &mut PullMemo,
     a: (i64, i64),
@@ -103,18 +105,18 @@ pub fn cycle(
         return Err(alarm(AlarmCode::Geometry, Some(b'X'), Rule::ComSide));
     }
     // G92.JK.8: only No.107 = 0 is modelled.
-    if config.params.no107_pullout_speed != 0 {
+    if params.no107_pullout_speed != 0 {
         return Err(alarm(AlarmCode::Unsupported, None, Rule::G92Jk8));
     }
     let s = sat(s);
-    let (amounts, pull) = pull.get(config, PullInputs { lead, j: st.j, k: st.k, w, r, s });
+    let (amounts, pull) = pull.get(config, params, PullInputs { lead, j: st.j, k: st.k, w, r, s });
     if let Some(am) = amounts {
         if am.k.unsigned_abs() >= travel(w, r) {
             return Err(alarm(AlarmCode::Geometry, Some(b'K'), Rule::G92Pullout));
         }
     }
     // PRJ.MAXPASS: one pass × L starts.
-    if st.starts > config.params.max_passes {
+    if st.starts > params.max_passes {
         return Err(alarm(AlarmCode::TooManyPasses, Some(b'L'), Rule::PrjMaxPass));
     }
     let cx = sat(cx);

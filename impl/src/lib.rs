@@ -25,7 +25,7 @@
     )
 )]
 
-mod config;
+pub mod config;
 mod emit;
 pub mod fixed;
 pub mod g162;
@@ -38,6 +38,9 @@ mod thread_move;
 mod words;
 
 use cycle_vocab::{Alarm, Block, Blocks, Config, Event};
+
+/// N: the largest length of any word or parameter, increments (COM.RANGES).
+pub use words::MAX_LENGTH;
 use modal::{Action, Machine};
 
 /// Streaming expansion of a program: one trace event per call of `next`, the alarm last.

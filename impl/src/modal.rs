@@ -3,6 +3,7 @@
 //! order of docs/INTERPRETATION.md — (2) G and M codes, conflicts, allowed words alphabetically;
 //! (3) values alphabetically; (4) missing words; (5) the cycle's own checks.
 
+use crate::config::Params;
 use crate::fixed::sat;
 use crate::emit::Cycle;
 use crate::g162::{self, max_lead, SplitParams};
@@ -10,9 +11,8 @@ use crate::g92::{self, G92State, PullMemo};
 use crate::multipass::{self, Code, FirstBlock, Second};
 use crate::thread_move::{thread_move, ThreadCode, ThreadWords, MAX_START_ANGLE};
 use crate::words::{
-    infeed_angle, integer_in, lead_f, lead_i, length_in, scaled_in, signed_length, signed_lead, At, MAX_G92_JK,
+    infeed_angle, integer_in, lead_f, lead_i, length_in, scaled_in, signed_length, signed_lead, At, MAX_G92_JK, MAX_LENGTH,
 };
-use cycle_vocab::params::MAX_LENGTH;
 use cycle_vocab::{letter_bit, letter_mask, Alarm, AlarmCode, Block, Config, Dialect, Move, Number, Rule, Units};
 
 /// The modal motion mode.
@@ -52,6 +52,8 @@ enum Kind {
 #[derive(Clone, Copy, Debug)]
 pub struct Machine {
     pub config: Config,
+    /// The parameters in force (the configuration's, else the defaults).
+    pub params: Params,
     /// Current position: X diameter, Z.
     pub pos: (i64, i64),
     mode: Mode,
@@ -117,15 +119,17 @@ pub const FANUC_ANGLES: [u32; 6] = [80, 60, 55, 30, 29, 0];
 
 impl Machine {
     pub fn new(config: Config) -> Machine {
+        let params = crate::config::check(&config).unwrap_or(crate::config::DEFAULTS);
         Machine {
             config,
+            params,
             pos: (config.start_x, config.start_z),
             mode: Mode::Rapid,
             feed: None,
             g92: G92State::new(),
             g92_pull: PullMemo::default(),
-            g76: FirstBlock::defaults(&config, Code::G76),
-            g78: FirstBlock::defaults(&config, Code::G78),
+            g76: FirstBlock::defaults(&params, Code::G76),
+            g78: FirstBlock::defaults(&params, Code::G78),
             incremental: false,
         }
     }
@@ -379,7 +383,7 @@ impl Machine {
     /// NC201.XMODE: an X (or G162 W) word under nc201 as a diameter count, |v| ≤ N as written.
     fn x_word(&self, n: Number, at: At) -> Result<i64, Alarm> {
         let v = signed_length(n, self.config.grid, at)?;
-        Ok(if self.config.params.x_radius == 1 { 2 * v } else { v })
+        Ok(if self.params.x_radius == 1 { 2 * v } else { v })
     }
 
     /// PRJ.MODAL: G00 / G01 blocks (and non-motion blocks in those modes); the move, if any.
@@ -442,7 +446,7 @@ impl Machine {
         st.index = st.index.saturating_add(1);
         let st = *st;
         // A `match`, not `?`: `?` copies the cycle (~300 bytes) once more on its way out.
-        match g92::cycle(&self.config, &st, &mut self.g92_pull, self.pos, lead, line) {
+        match g92::cycle(&self.config, &self.params, &st, &mut self.g92_pull, self.pos, lead, line) {
             Ok(c) => *action = Action::Cycle(c),
             Err(a) => return Err(a),
         }
@@ -452,7 +456,7 @@ impl Machine {
     /// G76.FORMAT: a first block replaces the kept values of its code; omitted words fall back
     /// to their defaults (G76.DEFAULTS, G78.MODE, G78.DEPTHMODE).
     fn first(&mut self, code: Code, v: &Vals) {
-        let mut f = FirstBlock::defaults(&self.config, code);
+        let mut f = FirstBlock::defaults(&self.params, code);
         if let Some(p) = v.p {
             // P is 0…999 999 here.
             let digit = |div: i64| u32::try_from((p / div) % 100).unwrap_or(0);
@@ -509,7 +513,7 @@ impl Machine {
             Code::G76 => &self.g76,
             Code::G78 => &self.g78,
         };
-        match multipass::cycle(&self.config, code, first, self.pos, &sec, line) {
+        match multipass::cycle(&self.config, &self.params, code, first, self.pos, &sec, line) {
             Ok(c) => *action = Action::Cycle(c),
             Err(a) => return Err(a),
         }
@@ -607,7 +611,7 @@ impl Machine {
             // G162.J: omitted → one revolution.
             j: angle(v.j, 360_000),
         };
-        match g162::cycle(&self.config, &words, self.pos, line) {
+        match g162::cycle(&self.config, &self.params, &words, self.pos, line) {
             Ok(c) => *action = Action::G162(c),
             Err(a) => return Err(a),
         }

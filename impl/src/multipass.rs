@@ -5,6 +5,7 @@ use crate::emit::{Cut, Cycle, Path, Plan};
 use crate::fixed::{sat, Tan};
 use crate::pullout::{multi_amounts, offsets, tenths_of_lead, travel};
 use crate::schedule::{Rough, Schedule, ScheduleParams};
+use crate::config::Params;
 use cycle_vocab::{Alarm, AlarmCode, Config, Pass, PassKind, Rule};
 
 /// Which multi-pass code.
@@ -39,8 +40,7 @@ pub struct FirstBlock {
 
 impl FirstBlock {
     /// G76.DEFAULTS / G78.MODE / G78.DEPTHMODE: every value from its default.
-    pub fn defaults(config: &Config, code: Code) -> FirstBlock {
-        let p = &config.params;
+    pub fn defaults(p: &Params, code: Code) -> FirstBlock {
         FirstBlock {
             m: p.p5142_finish_passes,
             r: None,
@@ -206,6 +206,7 @@ impl Multi {
 /// G78.PULLOUT); then the cycle (G76.PATH).
 pub fn cycle(
     config: &Config,
+    params: &Params,
     code: Code,
     first: &FirstBlock,
     a: (i64, i64),
@@ -240,14 +241,14 @@ pub fn cycle(
     let target = sec.k - first.d; // 1 ≤ T ≤ N
     let sched =
         Schedule::new(&ScheduleParams { first_cut: sec.dd, min_cut: first.dmin, target, constant: !first.degressive });
-    let max = config.params.max_passes;
+    let max = params.max_passes;
     let too_many = alarm(AlarmCode::TooManyPasses, b'Q', Rule::PrjMaxPass);
     let rough = sched.rough_pass_count(max).ok_or(too_many)?;
     let total = (u64::from(rough) + u64::from(first.m)).saturating_mul(u64::from(first.starts));
     if total > u64::from(max) {
         return Err(too_many);
     }
-    let p = &config.params;
+    let p = params;
     let chamfer = tenths_of_lead(first.r.unwrap_or(p.p5130_chamfer), sec.lead, config.grid);
     let amounts = multi_amounts(sec.j, sec.kk, chamfer, p.p5131_chamfer_angle);
     let rule_pull = match code {

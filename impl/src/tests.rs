@@ -343,11 +343,11 @@ fn g78_constant_depth() {
 /// PRJ.MAXPASS: the bound is checked before any motion of the cycle; earlier moves stay.
 #[test]
 fn pass_bound() {
-    let mut params = Params { max_passes: 12, ..Params::default() };
+    let mut params = Params { max_passes: Some(12), ..Params::default() };
     let cfg = Config { params, ..Config::default() };
     let t = expand(include_str!("../../corpus/f76_ex1.nc"), cfg);
     assert_eq!(t.alarm, None);
-    params.max_passes = 11;
+    params.max_passes = Some(11);
     let cfg = Config { params, ..Config::default() };
     let t = expand(include_str!("../../corpus/f76_ex1.nc"), cfg);
     assert_eq!(t.alarm, alarm(AlarmCode::TooManyPasses, Some(b'Q'), Rule::PrjMaxPass, 4));
@@ -356,11 +356,11 @@ fn pass_bound() {
     let t = expand("G0 X100 Z5\nG76 P010060 Q0 R0\nG76 X0 Z-10 P49.999 Q0.001 F1\n", Config::default());
     assert_eq!(t.alarm, alarm(AlarmCode::TooManyPasses, Some(b'Q'), Rule::PrjMaxPass, 3));
     // Starts count: 12 passes × L3 = 36 > 30.
-    let cfg = Config { params: Params { max_passes: 30, ..Params::default() }, ..Config::default() };
+    let cfg = Config { params: Params { max_passes: Some(30), ..Params::default() }, ..Config::default() };
     let t = expand("G0 X60 Z10\nG76 P011060 Q0.1 R0.1 L3\nG76 X33.8 Z-60 P2.4 Q0.7 F4\n", cfg);
     assert_eq!(t.alarm, alarm(AlarmCode::TooManyPasses, Some(b'Q'), Rule::PrjMaxPass, 3));
     // G92: L > max_passes.
-    let cfg = Config { params: Params { max_passes: 2, ..Params::default() }, ..Config::default() };
+    let cfg = Config { params: Params { max_passes: Some(2), ..Params::default() }, ..Config::default() };
     let t = expand("G0 X35 Z5\nG92 X29.2 Z-20 F3 L3\n", cfg);
     assert_eq!(t.alarm, alarm(AlarmCode::TooManyPasses, Some(b'L'), Rule::PrjMaxPass, 2));
     // G92: L = max_passes is allowed.
@@ -372,11 +372,11 @@ fn pass_bound() {
 /// K·tan(1°) below half an increment) means no pull-out, not a zero-length one.
 #[test]
 fn zero_pullout_amounts_mean_no_pullout() {
-    let cfg = Config { params: Params { no19_pullout: 0, ..Params::default() }, ..Config::default() };
+    let cfg = Config { params: Params { no19_pullout: Some(0), ..Params::default() }, ..Config::default() };
     let t = expand("G0 X65 Z5\nG92 X58.7 Z-28 F3 K1\n", cfg);
     assert_eq!(t.alarm, None);
     assert_eq!(threads(&t), [(58_700, -28_000)]);
-    let cfg = Config { params: Params { p5131_chamfer_angle: 1, ..Params::default() }, ..Config::default() };
+    let cfg = Config { params: Params { p5131_chamfer_angle: Some(1), ..Params::default() }, ..Config::default() };
     let t = expand("G0 X40 Z5\nG76 P011060 Q0.1 R0.1\nG76 X27.4 Z-20 P1.095 Q0.3 F2 K0.001\n", cfg);
     assert_eq!(t.alarm, None);
     assert!(t.moves().all(|m| m.rule != Rule::G76Pullout), "{}", t.to_gcode());
@@ -449,12 +449,12 @@ fn check_order() {
     // Config first, on line 0.
     let bad = Config { start_z: 1_000_000_000, ..Config::default() };
     assert_eq!(expand("G0 X1\n#", bad).alarm, alarm(AlarmCode::OutOfRange, Some(b'Z'), Rule::ComRanges, 0));
-    let bad = Config { params: Params { p5131_chamfer_angle: 0, ..Params::default() }, ..Config::default() };
+    let bad = Config { params: Params { p5131_chamfer_angle: Some(0), ..Params::default() }, ..Config::default() };
     assert_eq!(expand("", bad).alarm, alarm(AlarmCode::OutOfRange, None, Rule::G76Pullout, 0));
-    let bad = Config { dialect: Dialect::Fanuc, params: Params { p5143_tool_angle: 45, ..Params::default() }, ..Config::default() };
+    let bad = Config { dialect: Dialect::Fanuc, params: Params { p5143_tool_angle: Some(45), ..Params::default() }, ..Config::default() };
     assert_eq!(expand("", bad).alarm, alarm(AlarmCode::OutOfRange, None, Rule::F76Format, 0));
     // No.107 ≠ 0 refused when a G92 cycle runs.
-    let n107 = Config { params: Params { no107_pullout_speed: 5, ..Params::default() }, ..Config::default() };
+    let n107 = Config { params: Params { no107_pullout_speed: Some(5), ..Params::default() }, ..Config::default() };
     assert_eq!(expand("G0 X35 Z5\nG92 F3\nG92 X29 Z-20", n107).alarm, alarm(AlarmCode::Unsupported, None, Rule::G92Jk8, 3));
 }
 
@@ -537,14 +537,14 @@ fn no_panic_on_random_input() {
         let mut params = Params::default();
         if round % 3 == 0 {
             let r = xorshift(&mut s);
-            params.no19_pullout = (r % 300) as u32;
-            params.p5130_chamfer = (r >> 9) as u32 % 120;
-            params.p5131_chamfer_angle = (r >> 17) as u32 % 95;
-            params.p5140_min_cut = extremes[(r >> 24) as usize % extremes.len()];
-            params.p5141_finish_allowance = extremes[(r >> 28) as usize % extremes.len()];
-            params.p5142_finish_passes = (r >> 32) as u32 % 120;
-            params.p5143_tool_angle = (r >> 40) as u32 % 110;
-            params.max_passes = [0, 1, 50, 10_000, u32::MAX][(r >> 48) as usize % 5];
+            params.no19_pullout = Some(((r % 300)) as i64);
+            params.p5130_chamfer = Some(((r >> 9) as u32 % 120) as i64);
+            params.p5131_chamfer_angle = Some(((r >> 17) as u32 % 95) as i64);
+            params.p5140_min_cut = Some((extremes[(r >> 24) as usize % extremes.len()]) as i64);
+            params.p5141_finish_allowance = Some((extremes[(r >> 28) as usize % extremes.len()]) as i64);
+            params.p5142_finish_passes = Some(((r >> 32) as u32 % 120) as i64);
+            params.p5143_tool_angle = Some(((r >> 40) as u32 % 110) as i64);
+            params.max_passes = Some(([0, 1, 50, 10_000, u32::MAX][(r >> 48) as usize % 5]) as i64);
         }
         let r = xorshift(&mut s);
         let cfg = Config {
@@ -591,7 +591,7 @@ fn no_panic_on_extreme_cycles() {
             "G0 X{} Z{}\nG76 P{p:06} Q{} R{} L{l}\nG76 X{} Z{} R{} P{} Q{} F{f1} J{} K{}\nG92 X{} Z{} R{} F{f2} J{} K{}\nX{}\n",
             w[0], w[1], u(2), u(3), w[4], w[5], w[6], u(7), u(8), u(9), u(10), w[11], w[12], w[13], w[14], w[15], w[0],
         );
-        let cfg = Config { params: Params { max_passes: 2_000, ..Params::default() }, ..Config::default() };
+        let cfg = Config { params: Params { max_passes: Some(2_000), ..Params::default() }, ..Config::default() };
         let t = expand(&src, cfg);
         // With no alarm the cycles returned to the start point.
         if t.alarm.is_none() {
@@ -641,7 +641,7 @@ fn random_legal_multipass_cycles() {
             len(ax), len(az), len(dmin), len(d), 1 + r() % 2, len(dx), len(w), len(i), len(k), len(dd),
             cycle_vocab::text::fixed(1 + (r() % 20_000) as i64, grid.lead_decimals()),
         );
-        let cfg = Config { grid, params: Params { max_passes: 5_000, ..Params::default() }, ..Config::default() };
+        let cfg = Config { grid, params: Params { max_passes: Some(5_000), ..Params::default() }, ..Config::default() };
         let t = expand(&src, cfg);
         if let Some(a) = t.alarm {
             // Only the pass bound or the chamfer pull-out may refuse these programs.

@@ -2,11 +2,13 @@
 //! range (COM.UNITS, COM.RANGES, COM.LEAD, PRJ.DIALECT / F76.MICRONS). Each function names the
 //! alarm of docs/INTERPRETATION.md, "Which alarm, exactly".
 
-use cycle_vocab::params::MAX_LENGTH;
 use cycle_vocab::units::NumberError;
 use cycle_vocab::{Alarm, AlarmCode, Grid, Number, Rule, Units};
 
 /// The largest G92 J or K, increments (G92.JK.7, M002).
+/// N: the largest length of any word or parameter, increments (COM.RANGES).
+pub const MAX_LENGTH: i64 = 999_999_999;
+/// G92 J and K: the largest magnitude, increments (COM.RANGES).
 pub const MAX_G92_JK: i64 = 99_999_999;
 
 /// Where a value error is reported: the word and the block's line.

@@ -124,8 +124,10 @@ pub fn split_command(line: &str) -> Result<Vec<String>, String> {
 }
 
 /// The request line for case `id` (without the newline). The program goes as `program` when it
-/// is UTF-8, else as `program_hex` (two lowercase hex digits per byte).
+/// is UTF-8, else as `program_hex` (two lowercase hex digits per byte). Every parameter is
+/// named: those the configuration leaves unset with the reference's defaults.
 pub fn request(id: u64, program: &[u8], config: &Config) -> String {
+    let config = Config { params: cycle_spec::config::params(config).as_set(), ..*config };
     let mut req = serde_json::json!({ "schema": SCHEMA, "id": id, "config": config });
     match std::str::from_utf8(program) {
         Ok(text) => req["program"] = text.into(),

@@ -216,7 +216,7 @@ impl<'a> Dice<'a> {
 // Configuration
 
 /// N, the largest length (increments).
-const N: i64 = cycle_vocab::params::MAX_LENGTH;
+const N: i64 = cycle_spec::words::N;
 
 /// Increments per "unit" of generated geometry: 1 mm in metric, 0.1 in in inch, so that
 /// generated parts have sizes of real threads in both.
@@ -248,44 +248,44 @@ fn config(d: &mut Dice, fanuc: bool) -> Config {
     let mut c = Config { dialect: if fanuc { Dialect::Fanuc } else { Dialect::Gsk }, grid, ..Config::default() };
     let u = unit(grid);
     if d.chance(20) {
-        // Parameters within their legal ranges (vocab's Params::set checks them).
+        // Parameters within their legal ranges; the others stay unset (the engines' defaults).
         let p = &mut c.params;
         if d.chance(40) {
             // Tenths of the lead: mostly up to two leads, sometimes to the top of the range.
-            p.no19_pullout = if d.chance(15) { d.range(0, 255) } else { d.range(0, 20) } as u32;
+            p.no19_pullout = Some((if d.chance(15) { d.range(0, 255) } else { d.range(0, 20) }) as i64);
         }
         if d.chance(5) {
-            p.no107_pullout_speed = d.range(1, 999_999) as u32;
+            p.no107_pullout_speed = Some(d.range(1, 999_999) as i64);
         }
         if d.chance(10) {
-            p.no18_bit6_hold = 1;
+            p.no18_bit6_hold = Some(1);
         }
         if d.chance(30) {
-            p.p5130_chamfer = if d.chance(15) { d.range(0, 99) } else { d.range(0, 20) } as u32;
+            p.p5130_chamfer = Some((if d.chance(15) { d.range(0, 99) } else { d.range(0, 20) }) as i64);
         }
         if d.chance(30) {
-            p.p5131_chamfer_angle = d.range(1, 89) as u32;
+            p.p5131_chamfer_angle = Some(d.range(1, 89) as i64);
         }
         if d.chance(30) {
-            p.p5140_min_cut = d.range(0, u / 2);
+            p.p5140_min_cut = Some(d.range(0, u / 2) as i64);
         }
         if d.chance(30) {
-            p.p5141_finish_allowance = d.range(0, u / 5);
+            p.p5141_finish_allowance = Some(d.range(0, u / 5) as i64);
         }
         if d.chance(30) {
-            p.p5142_finish_passes = d.range(1, 4) as u32;
+            p.p5142_finish_passes = Some(d.range(1, 4) as i64);
         }
         if d.chance(30) {
-            p.p5143_tool_angle = if fanuc { d.one_of(&[60, 55, 30, 29, 0, 80, 45]) } else { d.range(0, 99) as u32 };
+            p.p5143_tool_angle = Some((if fanuc { d.one_of(&[60, 55, 30, 29, 0, 80, 45]) } else { d.range(0, 99) as u32 }) as i64);
         }
         if d.chance(30) {
-            p.p5144_infeed_mode = d.range(0, 4) as u32;
+            p.p5144_infeed_mode = Some(d.range(0, 4) as i64);
         }
         if d.chance(30) {
-            p.p5145_depth_mode = d.range(0, 1) as u32;
+            p.p5145_depth_mode = Some(d.range(0, 1) as i64);
         }
         if d.chance(20) {
-            p.max_passes = d.range(1, 60) as u32;
+            p.max_passes = Some(d.range(1, 60) as i64);
         }
     }
     if d.chance(10) {
@@ -647,7 +647,7 @@ fn build_multipass(dice: &mut Dice) -> Case {
         4 => Some(k),                   // d = k: no rough pass (G76.DEPTH.LAST alarm)
         _ => Some(k + d.range(1, u)),   // d > k
     };
-    let d_eff = finish.unwrap_or(config.params.p5141_finish_allowance);
+    let d_eff = finish.unwrap_or(cycle_spec::config::params(&config).p5141_finish_allowance);
     let t = (k - d_eff).max(1);
     // Δd relative to T = k − d: at most about 40 degressive passes, with exact ties.
     let dd = match d.weighted(&[70, 6, 6, 6, 4, 4, 4]) {
@@ -770,7 +770,7 @@ fn build_multipass(dice: &mut Dice) -> Case {
                 _ => match d.below(3) {
                     // 999 starts only under a pass bound it exceeds (999 × 2 cuts at least).
                     0 => {
-                        config.params.max_passes = d.range(1, 1997) as u32;
+                        config.params.max_passes = Some(d.range(1, 1997));
                         999
                     }
                     1 => 1000,

@@ -26,7 +26,7 @@ use crate::schedule::Schedule;
 use crate::source::{Outcome, Source};
 use crate::{check, cover};
 use cycle_impl::schedule::ScheduleParams;
-use cycle_vocab::params::MAX_LENGTH;
+use cycle_impl::MAX_LENGTH;
 
 /// The ranges a run draws from.
 #[derive(Clone, Copy, Debug)]

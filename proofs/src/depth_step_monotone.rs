@@ -40,7 +40,7 @@ use crate::schedule::Schedule;
 use crate::source::{Outcome, Source};
 use crate::{check, cover};
 use cycle_impl::schedule::{Rough, ScheduleParams};
-use cycle_vocab::params::MAX_LENGTH;
+use cycle_impl::MAX_LENGTH;
 use cycle_vocab::Rule;
 
 /// The ranges a run draws from.

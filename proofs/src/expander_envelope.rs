@@ -42,7 +42,8 @@ use crate::program::Program;
 use crate::source::{Outcome, Source};
 use crate::{check, cover};
 use cycle_impl::Expander;
-use cycle_vocab::params::MAX_LENGTH;
+use cycle_impl::MAX_LENGTH;
+use cycle_impl::config::DEFAULTS;
 use cycle_vocab::{AlarmCode, Config, Event, Grid, Increment, MoveKind, Params, Units};
 
 /// The ranges a run draws from, and which optional parts of a program it may write.
@@ -141,7 +142,12 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     // G76.DEFAULTS: Δdmin (5140) and d (5141) within the scope's lengths.
     let p5140_min_cut = src.bounded_i64(0, len);
     let p5141_finish_allowance = src.bounded_i64(0, len);
-    let params = Params { max_passes, p5140_min_cut, p5141_finish_allowance, ..Params::default() };
+    let params = Params {
+        max_passes: Some(i64::from(max_passes)),
+        p5140_min_cut: Some(p5140_min_cut),
+        p5141_finish_allowance: Some(p5141_finish_allowance),
+        ..Params::default()
+    };
     let config = Config { grid, params, start_x, start_z, ..Config::default() };
 
     let s: i64 = if src.bool() { 1 } else { -1 };
@@ -182,7 +188,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
             starts = l;
         }
         prog.end_block();
-        let no19 = ceil_div(i64::from(params.no19_pullout) * lead, 10 * lpi) + 1;
+        let no19 = ceil_div(i64::from(DEFAULTS.no19_pullout) * lead, 10 * lpi) + 1;
         pull_bound = j.unwrap_or(0).abs().max(kk.unwrap_or(0).abs()).max(no19);
     } else {
         let g = if code == 1 { 76 } else { 78 };
@@ -191,7 +197,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
         u = -2 * taper - s * (2 * k + clearance);
         let dd = src.bounded_i64(1, len);
         // First block: its values, or the parameters' defaults.
-        let defaults = Params::default();
+        let defaults = DEFAULTS;
         let mut chamfer_tenths = i64::from(defaults.p5130_chamfer);
         angle = i64::from(defaults.p5143_tool_angle);
         d_allow = p5141_finish_allowance;

@@ -35,7 +35,7 @@ use cycle_impl::fixed::{
     div_round, div_round_signed, isqrt, mul_tan, mul_tan_checked, mul_wide, sqrt_round, start_angle,
     tan_half_degrees, TAN_MAX_INDEX,
 };
-use cycle_vocab::params::MAX_LENGTH;
+use cycle_impl::MAX_LENGTH;
 
 /// Whether `t` is δ·tan rounded half up for every tangent in the table's enclosure
 /// [int + frac/2^128, int + (frac + 1)/2^128): in units of 2^-128, with X = δ·(int·2^128 + frac),

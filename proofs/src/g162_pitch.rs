@@ -28,7 +28,7 @@ use crate::program::Program;
 use crate::source::{Outcome, Source};
 use crate::{check, cover};
 use cycle_impl::Expander;
-use cycle_vocab::params::MAX_LENGTH;
+use cycle_impl::MAX_LENGTH;
 use cycle_vocab::{AlarmCode, Config, Dialect, Event, MoveKind, Rule};
 
 /// The ranges a run draws from.

@@ -23,7 +23,7 @@
 use crate::source::{Outcome, Source};
 use crate::{check, cover};
 use cycle_impl::g162::{first, next, pass_count, SplitParams, Step};
-use cycle_vocab::params::MAX_LENGTH;
+use cycle_impl::MAX_LENGTH;
 use cycle_vocab::Rule;
 
 /// The ranges a run draws from.

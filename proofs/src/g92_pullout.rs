@@ -33,7 +33,7 @@ use crate::program::Program;
 use crate::source::{Outcome, Source};
 use crate::{check, cover};
 use cycle_impl::Expander;
-use cycle_vocab::params::MAX_LENGTH;
+use cycle_impl::MAX_LENGTH;
 use cycle_vocab::{AlarmCode, Config, Event, MoveKind, Params, PassKind, Rule};
 
 use crate::expander_envelope::{max_f, GRIDS};
@@ -126,7 +126,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     prog.end_block();
     check!(src, !prog.overflowed() && prog.len() <= scope.max_program, "the program fits the scope's buffer bound");
 
-    let params = Params { no19_pullout: no19, ..Params::default() };
+    let params = Params { no19_pullout: Some(i64::from(no19)), ..Params::default() };
     let config = Config { grid, params, start_x: ax, start_z: az, ..Config::default() };
 
     // Expected, from the words alone.

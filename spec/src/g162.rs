@@ -198,7 +198,7 @@ pub fn expand(c: &G162Block, config: &Config, out: &mut Out) -> Result<(), Alarm
     let s = side(sx, c.x0, line)?;
     retract_side_ok(sx, c.x0, c.wd, c.v, s, line)?;
     if let Some((p, q)) = c.depth {
-        check_max_passes(pass_count(p, q), 1, &config.params, b'Q', line)?;
+        check_max_passes(pass_count(p, q), 1, &crate::config::params(config), b'Q', line)?;
     }
     // Ze1: where the thread ② ends and the leg ③ begins.
     let ze1 = c.ze - dz * c.v as i128;

@@ -9,7 +9,8 @@ use crate::emit::{start_angle, Out};
 use crate::exact::round_div;
 use crate::pullout::{self, Amounts, ThreadLine};
 use crate::words::alarm;
-use cycle_vocab::{Alarm, AlarmCode, Grid, Params, PassKind, Rule};
+use crate::config::Params;
+use cycle_vocab::{Alarm, AlarmCode, Grid, PassKind, Rule};
 
 /// One G92 cycle, all words resolved (absolute end point, modal values filled in).
 #[derive(Clone, Copy, Debug)]
@@ -113,7 +114,7 @@ pub fn expand(c: &G92Cycle, params: &Params, grid: Grid, out: &mut Out) -> Resul
     if params.no19_pullout > 255 {
         return Err(Alarm::new(AlarmCode::OutOfRange, None, Rule::G92Jk1, line));
     }
-    let amount = no19_amount(params.no19_pullout, c.lead, grid);
+    let amount = no19_amount(params.no19_pullout as u32, c.lead, grid);
     let pull = resolve_jk(c.j, c.k, amount);
     // G92.JK.8: only No.107 = 0 is modelled.
     if params.no107_pullout_speed != 0 {

@@ -309,7 +309,7 @@ impl<'c> Machine<'c> {
     /// NC201.XMODE (M004): under `nc201` with `x_radius` = 1 an X or W word is a radius, counted
     /// twice on the diameter grid; otherwise the value is already a diameter.
     fn x_units(&self, v: i64) -> i64 {
-        if self.config.dialect == Dialect::Nc201 && self.config.params.x_radius == 1 {
+        if self.config.dialect == Dialect::Nc201 && crate::config::params(self.config).x_radius == 1 {
             2 * v
         } else {
             v
@@ -416,7 +416,7 @@ impl<'c> Machine<'c> {
             index: self.run.index,
             line,
         };
-        g92::expand(&cycle, &self.config.params, self.config.grid, &mut self.out)
+        g92::expand(&cycle, &crate::config::params(self.config), self.config.grid, &mut self.out)
     }
 
     /// G76.FORMAT (M001) / G78.FORMAT (M000): a first block replaces that code's memory; omitted words fall

@@ -265,10 +265,10 @@ fn random_input_never_panics() {
         }
     }
     let mut wild = Config::default();
-    wild.params.p5131_chamfer_angle = 90;
-    wild.params.max_passes = u32::MAX;
-    wild.params.p5140_min_cut = -5;
-    wild.params.no19_pullout = 9_999;
+    wild.params.p5131_chamfer_angle = Some(90);
+    wild.params.max_passes = Some((u32::MAX) as i64);
+    wild.params.p5140_min_cut = Some(-5);
+    wild.params.no19_pullout = Some(9_999);
     for src in ["G0 X80 Z10\nG76 X60 Z-60 P3 Q1 F3\n", "G0 X65 Z5\nG92 X58 Z-20 F2\n"] {
         assert!(expand(src.as_bytes(), &wild).alarm.is_some());
     }
@@ -320,7 +320,7 @@ fn g76_internal_with_leadin() {
 #[test]
 fn max_passes_bound_is_cheap() {
     let mut c = Config::default();
-    c.params.max_passes = 1_000_000;
+    c.params.max_passes = Some(1_000_000);
     let t = expand(b"G0 X200 Z10\nG76 P010060 Q0 R0\nG76 X60 Z-60 P50 Q0.001 F3\n", &c);
     assert_eq!(t.alarm, Some(Alarm::new(AlarmCode::TooManyPasses, Some(b'Q'), Rule::PrjMaxPass, 3)));
     assert_eq!(t.events.len(), 1);

@@ -101,16 +101,16 @@ fn g91_incremental() {
 /// stay radii either way.
 #[test]
 fn x_radius_mode() {
-    let radius = Config { params: Params { x_radius: 1, ..Params::default() }, ..nc201() };
+    let radius = Config { params: Params { x_radius: Some(1), ..Params::default() }, ..nc201() };
     let r = run("G0 X15 Z5\nG162 X12 Z-20 H500 P1.2 Q0.5 V2 W1 F1.5\n", &radius);
     let d = run("G0 X30 Z5\nG162 X24 Z-20 H500 P1.2 Q0.5 V2 W2 F1.5\n", &nc201());
     assert_eq!(r, d);
     assert_eq!(r.alarm, None);
     // Under gsk the parameter is not read.
-    let gsk = Config { params: Params { x_radius: 1, ..Params::default() }, ..Config::default() };
+    let gsk = Config { params: Params { x_radius: Some(1), ..Params::default() }, ..Config::default() };
     assert_eq!(run("G0 X15\n", &gsk).moves().next().unwrap().x, 15_000);
     // Out of range through the library API: line 0, NC201.XMODE.
-    let bad = Config { params: Params { x_radius: 2, ..Params::default() }, ..nc201() };
+    let bad = Config { params: Params { x_radius: Some(2), ..Params::default() }, ..nc201() };
     assert_eq!(run("G0 X1\n", &bad).alarm, Some(Alarm::new(AlarmCode::OutOfRange, None, Rule::Nc201XMode, 0)));
 }
 
@@ -247,7 +247,7 @@ fn pass_bound_counts_split_passes() {
     let src = "G0 X30 Z5\nG162 X24 Z-20 H500 P1.05 Q0.1 F1.5\n";
     let t = run(src, &nc201());
     assert_eq!(depths(&t), [(1..=10).map(|n| n * 100).collect::<Vec<_>>(), vec![1_025, 1_038, 1_044, 1_050]].concat());
-    let at = |max| Config { params: Params { max_passes: max, ..Params::default() }, ..nc201() };
+    let at = |max| Config { params: Params { max_passes: Some((max) as i64), ..Params::default() }, ..nc201() };
     assert_eq!(run(src, &at(14)).alarm, None);
     assert_eq!(alarm_of(src, &at(13)), (AlarmCode::TooManyPasses, Some('Q'), Rule::PrjMaxPass, 2));
 }

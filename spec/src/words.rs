@@ -3,12 +3,11 @@
 //! Every function takes a [`Number`] exactly as written and returns an integer on its grid, or
 //! the alarm the register names (docs/INTERPRETATION.md, "Numbers, units, grid" and "Ranges").
 
-use cycle_vocab::params::MAX_LENGTH;
 use cycle_vocab::units::NumberError;
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Grid, Number, Rule, Units};
 
 /// N = 999 999 999 increments: the nine-digit range of every length word (COM.RANGES).
-pub const N: i64 = MAX_LENGTH;
+pub const N: i64 = 999_999_999;
 /// G92 J and K: |v| ≤ 99 999 999 increments (COM.RANGES, M002).
 pub const JK_MAX: i64 = 99_999_999;
 

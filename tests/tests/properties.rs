@@ -282,7 +282,7 @@ proptest! {
     fn multipass_depths_bounds_and_envelope(case in multi_case()) {
         let program = case.program();
         let config = Config { grid: case.grid, ..Config::default() };
-        let max_passes = config.params.max_passes as usize;
+        let max_passes = cycle_spec::config::params(&config).max_passes as usize;
         let (ax, az) = case.start();
         for (engine, trace) in both(&program, config) {
             let ctx = format!("{engine} on\n{program}\n(alarm {:?})", trace.alarm);
@@ -465,7 +465,7 @@ proptest! {
         let config = Config {
             dialect: cycle_vocab::Dialect::Nc201,
             grid: case.grid,
-            params: cycle_vocab::Params { max_passes: 1_000_000, ..cycle_vocab::Params::default() },
+            params: cycle_vocab::Params { max_passes: Some(1_000_000), ..cycle_vocab::Params::default() },
             ..Config::default()
         };
         for (engine, trace) in both(&program, config) {

@@ -13,7 +13,7 @@ use cycle_oracle::certify::{self, CaseResult};
 use cycle_oracle::conformance::{self, alarm_summary};
 use cycle_oracle::corpus;
 use cycle_oracle::engine::{self, FailureKind, ImplEngine, SpecEngine};
-use cycle_vocab::params::MAX_LENGTH;
+use cycle_spec::words::N as MAX_LENGTH;
 use cycle_vocab::text::Trace;
 use cycle_vocab::{Config, Dialect, Grid, Increment, Units};
 use std::process::ExitCode;
@@ -215,8 +215,9 @@ fn parse(args: &[String], allow_engine: bool) -> Result<Options, Bad> {
                 let Ok(v) = v.trim().parse::<i64>() else {
                     return bad(format!("--param {n}: {v:?} is not an integer"));
                 };
-                if let Err(e) = o.config.params.set(n.trim(), v) {
-                    return bad(format!("--param {n}={v}: {e}"));
+                if o.config.params.set(n.trim(), v).is_err() {
+                    let names = cycle_vocab::Params::NAMES.join(", ");
+                    return bad(format!("--param {n}: unknown parameter (one of {names})"));
                 }
             }
             "--start-x" => o.start.0 = Some(value.to_string()),
@@ -236,6 +237,10 @@ fn parse(args: &[String], allow_engine: bool) -> Result<Options, Bad> {
     }
     if let Some(z) = &o.start.1 {
         o.config.start_z = grid_value(z, decimals).map_err(|e| Bad(format!("--start-z {z:?}: {e}")))?;
+    }
+    // The reference's own ranges decide which parameter values are legal.
+    if let Err(a) = cycle_spec::config::check(&o.config) {
+        return bad(format!("the configuration is refused: {a}"));
     }
     Ok(o)
 }

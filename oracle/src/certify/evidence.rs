@@ -98,9 +98,9 @@ fn configurations(run: &Run) -> Value {
     json!({
         "dialect": dialect,
         "grid": grid,
-        "cases_with_changed_parameters": non_default_params,
+        "cases_with_parameters_set": non_default_params,
         "cases_with_a_start_point": non_zero_start,
-        "default_parameters": Params::default(),
+        "default_parameters": cycle_spec::config::DEFAULTS.as_set(),
     })
 }
 

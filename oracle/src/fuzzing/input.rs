@@ -43,7 +43,9 @@ pub fn literal_config(bits: u8) -> Config {
         (false, false) => Dialect::Gsk,
     };
     let mut config = Config { dialect, grid: Grid { units, increment }, ..Config::default() };
-    config.params.x_radius = u32::from(bits & 16 != 0);
+    if bits & 16 != 0 {
+        config.params.x_radius = Some(1);
+    }
     config
 }
 
@@ -53,7 +55,7 @@ pub fn literal_bits(config: &Config) -> u8 {
         | if config.grid.units == Units::Inch { 2 } else { 0 }
         | if config.grid.increment == Increment::Isc { 4 } else { 0 }
         | if config.dialect == Dialect::Nc201 { 8 } else { 0 }
-        | if config.params.x_radius == 1 { 16 } else { 0 }
+        | if config.params.x_radius == Some(1) { 16 } else { 0 }
 }
 
 impl<'a> Arbitrary<'a> for CycleInput {
@@ -135,7 +137,7 @@ mod tests {
     #[test]
     fn nc201_and_its_families_are_reachable() {
         let radius = literal_config(8 | 16 | 1);
-        assert_eq!((radius.dialect, radius.params.x_radius), (Dialect::Nc201, 1));
+        assert_eq!((radius.dialect, radius.params.x_radius), (Dialect::Nc201, Some(1)));
         assert_eq!(literal_bits(&radius), 8 | 16);
         for (byte, family) in [(16, "g162"), (17, "g162"), (18, "thread"), (19, "thread"), (20, "g76")] {
             let case = CycleInput::from_bytes(&[byte]).case();

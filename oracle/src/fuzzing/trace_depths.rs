@@ -19,7 +19,7 @@
 use cycle_impl::Expander;
 use cycle_proofs::expander_envelope::{max_f, GRIDS};
 use cycle_proofs::source::{Outcome, Source};
-use cycle_vocab::params::MAX_LENGTH;
+use cycle_impl::MAX_LENGTH;
 use cycle_vocab::text::{fixed, Trace};
 use cycle_vocab::{AlarmCode, Config, Event, MoveKind, PassKind};
 
@@ -80,7 +80,7 @@ pub fn body<S: Source>(src: &mut S) -> Outcome {
         return Ok(());
     }
     let passes: Vec<_> = trace.events.iter().filter_map(|e| if let Event::Pass(p) = e { Some(*p) } else { None }).collect();
-    let max_passes = config.params.max_passes as usize;
+    let max_passes = cycle_spec::config::params(&config).max_passes as usize;
     src.verdict(passes.len() * starts as usize <= max_passes, "PRJ.MAXPASS: passes × starts within max_passes")?;
     let rough: Vec<i64> = passes.iter().filter(|p| p.kind == PassKind::Rough).map(|p| p.diameter_depth / 2).collect();
     let finish: Vec<_> = passes.iter().filter(|p| p.kind != PassKind::Rough).collect();

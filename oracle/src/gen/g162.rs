@@ -23,7 +23,7 @@ pub(super) fn build_g162(dice: &mut Dice) -> Case {
     let d = &mut dice.fork(4);
     let radius = d.chance(25);
     if radius {
-        config.params.x_radius = 1;
+        config.params.x_radius = Some(1);
     }
     let mut w = Writer::new(&mut dice.fork(2));
     // An X value as written: a diameter count, or half of it in radius mode.

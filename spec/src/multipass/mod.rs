@@ -18,7 +18,8 @@ use crate::exact::round_div;
 use crate::pullout::{self, Amounts, ThreadLine};
 use crate::tangent::round_mul_tan_degrees;
 use crate::words::{alarm, N};
-use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Grid, Params, PassKind, Rule};
+use crate::config::{params, Params};
+use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Grid, PassKind, Rule};
 use infeed::{finish_z, flank, infeed_x, infeed_z, t};
 use schedule::{rough_passes, DepthMode, TooMany};
 
@@ -123,7 +124,7 @@ pub fn check_max_passes(passes: u128, starts: u128, params: &Params, word: u8, l
 
 /// The `max_passes` parameter, checked against its range 1…1 000 000.
 fn max_passes(params: &Params, line: u32) -> Result<u64, Alarm> {
-    param(params.max_passes as i64, 1, 1_000_000, Rule::PrjMaxPass, line).map(|v| v as u64)
+    param(params.max_passes, 1, 1_000_000, Rule::PrjMaxPass, line).map(|v| v as u64)
 }
 
 /// A machine parameter used by a cycle must lie in its documented range (docs/INTERPRETATION.md,
@@ -158,18 +159,18 @@ pub struct Settings {
 /// G76 e omitted → 0; G78 mode → 5144, depth mode → 5145; L → 1; E → 0. Parameters are checked
 /// against their ranges when used.
 pub fn settings(cycle: Cycle, first: &FirstBlock, config: &Config, line: u32) -> Result<Settings, Alarm> {
-    let p = &config.params;
+    let p = params(config);
     let (m, mid, a, r) = match first.p {
         Some(v) => {
             let (m, mid, a) = p_digits(v);
             (m, mid, a, if cycle == Cycle::G76 { Some(mid) } else { None })
         }
         None => {
-            let m = param(p.p5142_finish_passes as i64, 1, 99, Rule::G76Defaults, line)? as u32;
-            let a = param(p.p5143_tool_angle as i64, 0, 99, Rule::G76Defaults, line)? as u32;
+            let m = param(p.p5142_finish_passes, 1, 99, Rule::G76Defaults, line)? as u32;
+            let a = param(p.p5143_tool_angle, 0, 99, Rule::G76Defaults, line)? as u32;
             let mid = match cycle {
                 Cycle::G76 => 0,
-                Cycle::G78 => param(p.p5144_infeed_mode as i64, 0, 4, Rule::G78Mode, line)? as u32,
+                Cycle::G78 => param(p.p5144_infeed_mode, 0, 4, Rule::G78Mode, line)? as u32,
             };
             (m, mid, a, None)
         }
@@ -182,7 +183,7 @@ pub fn settings(cycle: Cycle, first: &FirstBlock, config: &Config, line: u32) ->
         Cycle::G78 => {
             let dm = match first.d_mode {
                 Some(v) => v,
-                None => param(p.p5145_depth_mode as i64, 0, 1, Rule::G78DepthMode, line)?,
+                None => param(p.p5145_depth_mode, 0, 1, Rule::G78DepthMode, line)?,
             };
             (mid, if dm == 0 { DepthMode::Constant } else { DepthMode::Degressive })
         }
@@ -224,13 +225,13 @@ pub fn pullout_amounts(
     line: u32,
 ) -> Result<Option<Amounts>, Alarm> {
     let rule = cycle.pullout_rule();
-    let angle = |line| param(params.p5131_chamfer_angle as i64, 1, 89, rule, line).map(|v| v as u32);
+    let angle = |line| param(params.p5131_chamfer_angle, 1, 89, rule, line).map(|v| v as u32);
     let tan_of = |k: i128, deg: u32| round_mul_tan_degrees(k as i64, deg).unwrap_or(0) as i128;
     let (jv, kv) = match (j, k) {
         (None, None) => {
             let tenths = match r {
                 Some(r) => r as i64,
-                None => param(params.p5130_chamfer as i64, 0, 99, rule, line)?,
+                None => param(params.p5130_chamfer, 0, 99, rule, line)?,
             };
             let width = chamfer_width(tenths, lead, grid);
             (tan_of(width, angle(line)?), width)
@@ -279,14 +280,15 @@ pub fn expand(cycle: Cycle, first: &FirstBlock, second: &SecondBlock, config: &C
         return Err(alarm(AlarmCode::Geometry, b'X', Rule::ComPoints, line));
     }
     // Depth schedule and PRJ.MAXPASS.
-    let limit = max_passes(&config.params, line)?;
+    let p = params(config);
+    let limit = max_passes(&p, line)?;
     let rough = match rough_passes(k, set.d, second.dd, set.dmin, set.depth_mode, limit) {
         Ok(r) => r,
         Err(TooMany) => return Err(alarm(AlarmCode::TooManyPasses, b'Q', Rule::PrjMaxPass, line)),
     };
-    check_max_passes(rough.len() as u128 + set.m as u128, set.l as u128, &config.params, b'Q', line)?;
+    check_max_passes(rough.len() as u128 + set.m as u128, set.l as u128, &p, b'Q', line)?;
     // Pull-out amounts and K against the long-axis travel.
-    let pull = pullout_amounts(cycle, second.j, second.k_pull, set.r, second.lead, config.grid, &config.params, line)?;
+    let pull = pullout_amounts(cycle, second.j, second.k_pull, set.r, second.lead, config.grid, &p, line)?;
     if let Some(a) = pull {
         if a.k >= pullout::long_travel(w, i) {
             return Err(alarm(AlarmCode::Geometry, b'K', cycle.pullout_rule(), line));
