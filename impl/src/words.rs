@@ -5,7 +5,6 @@
 use cycle_vocab::units::NumberError;
 use cycle_vocab::{Alarm, AlarmCode, Grid, Number, Rule, Units};
 
-/// The largest G92 J or K, increments (G92.JK.7, M002).
 /// N: the largest length of any word or parameter, increments (COM.RANGES).
 pub const MAX_LENGTH: i64 = 999_999_999;
 /// G92 J and K: the largest magnitude, increments (COM.RANGES).
