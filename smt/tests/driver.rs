@@ -135,7 +135,7 @@ fn random_full_ranges() {
 #[test]
 fn edges_rounding_ties() {
     let mut rng = Rng(7);
-    for dd in [1i64, 2, 3, 7, 10, 1000, 31_622, 999_999] {
+    for dd in [1i64, 2, 3, 7, 10, 1000, 31_622] {
         for j in [1i64, 2, 5, 100, 10_000] {
             let r = i128::from(j) * i128::from(dd) * i128::from(dd);
             if r + 2 > i128::from(N) {
