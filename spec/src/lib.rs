@@ -9,7 +9,8 @@
 //! |---|---|
 //! | [`config`] | COM.RANGES of the start point, parameter ranges (line 0) |
 //! | [`program`] | PRJ.MODAL, PRJ.WORD, PRJ.SUPPORTED, PRJ.DIALECT, COM.ABSINC, check order |
-//! | [`words`] | COM.UNITS, COM.RANGES, COM.LEAD, F76.MICRONS |
+//! | [`lex`] | PRJ.LEX, PRJ.WORD: the spec's own reader of program text |
+//! | [`words`] | COM.UNITS, COM.RANGES, COM.LEAD, F76.MICRONS: exact values of words |
 //! | [`exact`], [`tangent`] | the rounding rule: half up, once, on exact values |
 //! | [`g92`] | G92.* |
 //! | [`pullout`] | G92.PULLOUT, G76.PULLOUT, G78.PULLOUT geometry, COM.LONGAXIS |
@@ -24,6 +25,7 @@ pub mod emit;
 pub mod exact;
 pub mod g162;
 pub mod g92;
+pub mod lex;
 pub mod multipass;
 pub mod program;
 pub mod pullout;
@@ -32,7 +34,7 @@ pub mod thread_moves;
 pub mod words;
 
 use cycle_vocab::text::Trace;
-use cycle_vocab::{Blocks, Config};
+use cycle_vocab::Config;
 
 /// Expands a whole program into its trace. Stops at the first alarm, keeping the events emitted
 /// before it. Never panics; resource use is bounded by the program length and `max_passes`
@@ -43,7 +45,7 @@ pub fn expand(program: &[u8], config: &Config) -> Trace {
         return Trace { grid: config.grid, events: Vec::new(), alarm: Some(a) };
     }
     let mut alarm = None;
-    for block in Blocks::new(program) {
+    for block in lex::blocks(program) {
         let result = match block {
             Ok(b) => machine.block(&b),
             Err(a) => Err(a),
@@ -64,3 +66,5 @@ pub fn expand(program: &[u8], config: &Config) -> Trace {
 mod tests;
 #[cfg(test)]
 mod tests_g162;
+#[cfg(test)]
+mod tests_lex;

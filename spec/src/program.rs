@@ -6,8 +6,8 @@
 //! index), the first-block memory of G76 and of G78, and under `nc201` the G90/G91 mode
 //! (docs/INTERPRETATION.md, "Program and modal state", "The `nc201` dialect").
 //!
-//! Check order within a block (docs/INTERPRETATION.md): (1) lexing (done by
-//! [`cycle_vocab::Blocks`]); (2) G and M codes supported, then conflicts (two motion codes;
+//! Check order within a block (docs/INTERPRETATION.md): (1) lexing (done by the spec's own
+//! reader, [`crate::lex`]); (2) G and M codes supported, then conflicts (two motion codes;
 //! G90/G91; X/U, Z/W, F/I except under `nc201`), then words allowed in alphabetical order;
 //! (3) each word's value in alphabetical order; (4) missing words (lead F, then P, then Q; G162
 //! and G34 as the register lists them); (5) the cycle's own checks.
@@ -18,7 +18,8 @@ use crate::g92::{self, G92Cycle};
 use crate::multipass::{self, Cycle, FirstBlock, SecondBlock};
 use crate::thread_moves::{self, ThreadCode, ThreadMove};
 use crate::words::{self, alarm, lead_max, JK_MAX, N};
-use cycle_vocab::{Alarm, AlarmCode, Block, Config, Dialect, Rule, Units};
+use crate::lex::{Block, Number};
+use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Rule, Units};
 
 /// The modal motion mode (PRJ.MODAL).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -120,8 +121,8 @@ impl<'c> Machine<'c> {
     /// Executes one block. `Ok(true)` when the block ends the program (M02, M30).
     pub fn block(&mut self, b: &Block) -> Result<bool, Alarm> {
         let (code, end) = self.codes(b)?;
-        conflicts(b, self.config.dialect)?;
         let kind = self.kind(b, code);
+        conflicts(b, self.config.dialect, kind)?;
         self.words_allowed(b, kind)?;
         let v = self.values(b, kind)?;
         self.absolute_or_incremental(b);
@@ -148,10 +149,8 @@ impl<'c> Machine<'c> {
             let unsupported = alarm(AlarmCode::UnsupportedCode, b'G', Rule::PrjSupported, line);
             let other_dialect = alarm(AlarmCode::UnsupportedCode, b'G', Rule::PrjDialect, line);
             // A G with a decimal point (G1.0, G92.1) or a sign is not a supported code.
-            if g.point || g.negative {
-                return Err(unsupported);
-            }
-            let code = match g.mantissa {
+            let Some(g) = code_value(g) else { return Err(unsupported) };
+            let code = match g {
                 0 => Some(Code::G00),
                 1 => Some(Code::G01),
                 32 | 33 | 34 | 76 | 78 | 92 if nc201 => return Err(other_dialect),
@@ -171,7 +170,7 @@ impl<'c> Machine<'c> {
                 18 | 40 | 97 | 99 => None,
                 20 | 21 => {
                     // COM.UNITS: the grid of a trace is fixed for the whole program.
-                    let wanted = if g.mantissa == 20 { Units::Inch } else { Units::Metric };
+                    let wanted = if g == 20 { Units::Inch } else { Units::Metric };
                     if wanted != self.config.grid.units {
                         return Err(alarm(AlarmCode::Unsupported, b'G', Rule::ComUnits, line));
                     }
@@ -188,11 +187,12 @@ impl<'c> Machine<'c> {
             if m.point {
                 return Err(alarm(AlarmCode::NotInteger, b'M', Rule::ComRanges, line));
             }
-            if m.negative || m.mantissa > 99 {
+            let m = code_value(m).filter(|&m| m <= 99);
+            let Some(m) = m else {
                 return Err(alarm(AlarmCode::UnsupportedCode, b'M', Rule::PrjSupported, line));
-            }
+            };
             // PRJ.MODAL: M02 and M30 end the program.
-            end = m.mantissa == 2 || m.mantissa == 30;
+            end = m == 2 || m == 30;
         }
         Ok((motion, end))
     }
@@ -319,9 +319,9 @@ impl<'c> Machine<'c> {
     /// NC201.ABSINC (M004): G90 / G91 written in the block set the mode, for this block on.
     fn absolute_or_incremental(&mut self, b: &Block) {
         for g in b.g_codes() {
-            match g.mantissa {
-                90 => self.incremental = false,
-                91 => self.incremental = true,
+            match code_value(g) {
+                Some(90) => self.incremental = false,
+                Some(91) => self.incremental = true,
                 _ => {}
             }
         }
@@ -542,13 +542,26 @@ fn has_axis(b: &Block) -> bool {
 
 /// How many of `codes` the block writes.
 fn code_count(b: &Block, codes: &[u64]) -> usize {
-    b.g_codes().iter().filter(|g| !g.point && !g.negative && codes.contains(&g.mantissa)).count()
+    b.g_codes().filter(|g| code_value(g).is_some_and(|g| codes.contains(&g))).count()
+}
+
+/// PRJ.SUPPORTED: the value of a G or M code, `None` when it has a decimal point or a sign (no
+/// code) or more digits than any code.
+fn code_value(n: &Number) -> Option<u64> {
+    if n.point || n.negative {
+        return None;
+    }
+    if n.digits.is_empty() {
+        return Some(0);
+    }
+    n.digits.parse().ok()
 }
 
 /// PRJ.WORD (PRJ), NC201.ABSINC (M004), COM.ABSINC, COM.LEAD (M001, M002): two motion codes;
-/// two of G90/G91; X with U; Z with W; F with I. Under `nc201` U, W and I are no incremental
-/// or lead addresses, so the three pair conflicts do not exist there.
-fn conflicts(b: &Block, dialect: Dialect) -> Result<(), Alarm> {
+/// two of G90/G91; X with U; Z with W; F with I in a thread block (G92, G76, G78, G32, G33,
+/// G34, written or modal), where I is threads per inch. Under `nc201` U, W and I are no
+/// incremental or lead addresses, so the three pair conflicts do not exist there.
+fn conflicts(b: &Block, dialect: Dialect, kind: Kind) -> Result<(), Alarm> {
     let line = b.line;
     if code_count(b, &[0, 1, 92, 76, 78, 32, 33, 34, 162]) > 1 {
         return Err(alarm(AlarmCode::Conflict, b'G', Rule::PrjWord, line));
@@ -565,7 +578,8 @@ fn conflicts(b: &Block, dialect: Dialect) -> Result<(), Alarm> {
     if b.has(b'Z') && b.has(b'W') {
         return Err(alarm(AlarmCode::Conflict, b'W', Rule::ComAbsInc, line));
     }
-    if b.has(b'F') && b.has(b'I') {
+    let thread = matches!(kind, Kind::G92 | Kind::First(_) | Kind::Second(_) | Kind::Thread(_));
+    if thread && b.has(b'F') && b.has(b'I') {
         return Err(alarm(AlarmCode::Conflict, b'I', Rule::ComLead, line));
     }
     Ok(())
