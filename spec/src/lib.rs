@@ -9,6 +9,7 @@
 //! |---|---|
 //! | [`config`] | COM.RANGES of the start point, parameter ranges (line 0) |
 //! | [`program`] | PRJ.MODAL, PRJ.WORD, PRJ.SUPPORTED, PRJ.DIALECT, COM.ABSINC, check order |
+//! | [`family`] | the one interface of the cycle families and their table |
 //! | [`lex`] | PRJ.LEX, PRJ.WORD: the spec's own reader of program text |
 //! | [`words`] | COM.UNITS, COM.RANGES, COM.LEAD, F76.MICRONS: exact values of words |
 //! | [`exact`], [`tangent`] | the rounding rule: half up, once, on exact values |
@@ -23,6 +24,7 @@
 pub mod config;
 pub mod emit;
 pub mod exact;
+pub mod family;
 pub mod g162;
 pub mod g92;
 pub mod lex;
@@ -59,7 +61,7 @@ pub fn expand(program: &[u8], config: &Config) -> Trace {
             }
         }
     }
-    Trace { grid: config.grid, events: machine.out.events, alarm }
+    Trace { grid: config.grid, events: machine.out().events, alarm }
 }
 
 #[cfg(test)]

@@ -142,6 +142,73 @@ pub fn half_degrees(n: &Number, word: u8, line: u32) -> Result<i64, Alarm> {
     in_range(&tenths, -890, 890, word, Rule::G162A, line).map(|t| t / 5)
 }
 
+/// How a word's value is read (check step 3): each family's word table names one per word.
+#[derive(Clone, Copy, Debug)]
+pub enum Read {
+    /// A length on the grid in `lo…hi` increments (COM.UNITS, COM.RANGES).
+    Length { lo: i64, hi: i64 },
+    /// A signed length in X units, |v| ≤ N: a diameter, or under `nc201` with `x_radius` = 1 a
+    /// radius counted twice (NC201.XMODE).
+    XLength,
+    /// A length, or under `fanuc` without a point an integer count of increments (F76.MICRONS).
+    Microns { lo: i64, hi: i64 },
+    /// F, the lead / feed (COM.LEAD).
+    Lead,
+    /// I, threads per inch, as a lead (COM.LEAD).
+    ThreadsPerInch,
+    /// An integer without a point in `lo…hi`, out of range under `rule`.
+    Integer { lo: i64, hi: i64, rule: Rule },
+    /// A signed value on the lead grid, |v| ≤ the F maximum, out of range under `rule`.
+    SignedLead { rule: Rule },
+    /// A feed on the lead grid in 1…`hi`, out of range under `rule`.
+    Feed { hi: i64, rule: Rule },
+    /// Degrees on the 0.001° grid in `lo…hi`, out of range under `rule`.
+    Millidegrees { lo: i64, hi: i64, rule: Rule },
+    /// G162.A: degrees in half-degree steps.
+    HalfDegrees,
+    /// A reader of the family's own (e.g. the digits of P(m)(r)(a)).
+    Own(fn(&Number, u8, &Config, u32) -> Result<i64, Alarm>),
+}
+
+impl Read {
+    /// The value of `n`, written as word `letter` on `line`, under `config`.
+    pub fn value(self, n: &Number, letter: u8, config: &Config, line: u32) -> Result<i64, Alarm> {
+        let grid = config.grid;
+        match self {
+            Read::Length { lo, hi } => length(n, letter, grid, lo, hi, line),
+            Read::XLength => length(n, letter, grid, -N, N, line).map(|v| x_units(v, config)),
+            Read::Microns { lo, hi } => micron_length(n, letter, config, lo, hi, line),
+            Read::Lead => lead_from_f(n, grid, line),
+            Read::ThreadsPerInch => lead_from_i(n, grid, line),
+            Read::Integer { lo, hi, rule } => integer(n, letter, lo, hi, rule, line),
+            Read::SignedLead { rule } => signed_lead(n, letter, grid, lead_max(grid), rule, line),
+            Read::Feed { hi, rule } => feed(n, letter, grid, hi, rule, line),
+            Read::Millidegrees { lo, hi, rule } => millidegrees(n, letter, lo, hi, rule, line),
+            Read::HalfDegrees => half_degrees(n, letter, line),
+            Read::Own(read) => read(n, letter, config, line),
+        }
+    }
+}
+
+/// NC201.XMODE (M004): under `nc201` with `x_radius` = 1 an X or W word is a radius, counted
+/// twice on the diameter grid; otherwise the value is already a diameter.
+pub fn x_units(v: i64, config: &Config) -> i64 {
+    if config.dialect == Dialect::Nc201 && crate::config::params(config).x_radius == 1 {
+        2 * v
+    } else {
+        v
+    }
+}
+
+/// Common word tables: the axis words X U Z W and F as everywhere (COM.ABSINC, COM.LEAD).
+pub const X: (u8, Read) = (b'X', Read::XLength);
+pub const U: (u8, Read) = (b'U', Read::Length { lo: -N, hi: N });
+pub const Z: (u8, Read) = (b'Z', Read::Length { lo: -N, hi: N });
+pub const W: (u8, Read) = (b'W', Read::Length { lo: -N, hi: N });
+pub const F: (u8, Read) = (b'F', Read::Lead);
+/// I as threads per inch (thread blocks, COM.LEAD).
+pub const I_TPI: (u8, Read) = (b'I', Read::ThreadsPerInch);
+
 #[cfg(test)]
 mod tests {
     use super::*;
