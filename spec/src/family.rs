@@ -93,6 +93,8 @@ pub fn table() -> Vec<Box<dyn Family>> {
         Box::new(crate::multipass::unit::Multipass::default()),
         Box::new(crate::thread_moves::ThreadMoves),
         Box::new(crate::g162::unit::G162),
+        Box::new(crate::g90::G90::default()),
+        Box::new(crate::g94::G94::default()),
     ]
 }
 

@@ -1,5 +1,6 @@
-//! Executable reference spec of the lathe thread canned cycles G92 (M002), G76 (M001, M003
-//! FANUC-style), G78 (M000) and G162 (M004), and of the thread moves G32, G33, G34 (M003).
+//! Executable reference spec of the lathe canned cycles: the thread cycles G92 (M002), G76
+//! (M001, M003 FANUC-style), G78 (M000) and G162 (M004), the thread moves G32, G33, G34 and the
+//! single cutting cycles G90, G94 (M003).
 //!
 //! A certification reference: clarity first, exact integer arithmetic, each rule a small
 //! function whose doc comment names its rule ID (`docs/RULES.md`) and source manual key. Every
@@ -18,6 +19,7 @@
 //! | [`multipass`] | G76.*, G78.*, F76.*, PRJ.MAXPASS |
 //! | [`g162`] | G162.* (M004, `nc201`), NC201.* in [`program`] |
 //! | [`thread_moves`] | G32, G33, G34 (M003) |
+//! | [`g90`], [`g94`], [`single_cut`] | G90.*, G94.* (M003): single cutting cycles and their runs |
 //! | [`emit`] | PRJ.TRACE, PRJ.NOOP, COM.MULTISTART |
 #![forbid(unsafe_code)]
 
@@ -26,11 +28,14 @@ pub mod emit;
 pub mod exact;
 pub mod family;
 pub mod g162;
+pub mod g90;
+pub mod g94;
 pub mod g92;
 pub mod lex;
 pub mod multipass;
 pub mod program;
 pub mod pullout;
+pub mod single_cut;
 pub mod tangent;
 pub mod thread_moves;
 pub mod words;
@@ -68,5 +73,7 @@ pub fn expand(program: &[u8], config: &Config) -> Trace {
 mod tests;
 #[cfg(test)]
 mod tests_g162;
+#[cfg(test)]
+mod tests_g90;
 #[cfg(test)]
 mod tests_lex;
