@@ -5,12 +5,97 @@
 //! (G92.MODAL) is handled by [`crate::program`]; this module expands one cycle. The manual's
 //! example (G92.EXAMPLE, `corpus/g92_example.nc`: one run of four cycles) is expanded here.
 
+use crate::config::Params;
 use crate::emit::{start_angle, Out};
 use crate::exact::round_div;
+use crate::family::{BlockIn, Code, Family, Kind, State, Words, GSK_FANUC};
 use crate::pullout::{self, Amounts, ThreadLine};
-use crate::words::alarm;
-use crate::config::Params;
-use cycle_vocab::{Alarm, AlarmCode, Grid, PassKind, Rule};
+use crate::words::{alarm, Read, F, I_TPI, JK_MAX, N, U, W, X, Z};
+use cycle_vocab::{Alarm, AlarmCode, Dialect, Grid, PassKind, Rule};
+
+/// G92 as a family of the interpreter: G92.FORMAT words, G92.MODAL memory.
+#[derive(Debug, Default)]
+pub struct G92 {
+    /// J, K, L: modal for the whole program (G92.MODAL).
+    j: Option<i64>,
+    k: Option<i64>,
+    l: Option<i64>,
+    run: Run,
+}
+
+/// A G92 modal run (G92.MODAL): kept end X, end Z (absolute), R, and the pass index.
+#[derive(Clone, Copy, Debug, Default)]
+struct Run {
+    end_x: Option<i128>,
+    end_z: Option<i128>,
+    r: i128,
+    index: u32,
+}
+
+/// G92.FORMAT (M002): `G92 X(U) Z(W) [R] F|I [J] [K] [L]`; R signed, J and K |v| ≤ 99 999 999
+/// (COM.RANGES), L 1…99.
+const WORDS: Words = Words::of(&[
+    F,
+    I_TPI,
+    (b'J', Read::Length { lo: -JK_MAX, hi: JK_MAX }),
+    (b'K', Read::Length { lo: -JK_MAX, hi: JK_MAX }),
+    (b'L', Read::Integer { lo: 1, hi: 99, rule: Rule::ComRanges }),
+    (b'R', Read::Length { lo: -N, hi: N }),
+    U,
+    W,
+    X,
+    Z,
+]);
+
+impl Family for G92 {
+    fn codes(&self) -> &'static [Code] {
+        &[Code { g: 92, dialects: GSK_FANUC }]
+    }
+    fn modal(&self) -> bool {
+        true
+    }
+    fn thread(&self) -> bool {
+        true
+    }
+    fn words(&self, _: Kind, _: Dialect) -> Words {
+        WORDS
+    }
+
+    /// G92.MODAL (M002): a block with axis words (and G92, or no motion code in G92 mode) cuts
+    /// one cycle; end X, end Z and R are kept within the run, F/I, J, K, L for the whole
+    /// program. A new run starts with R = 0 and the end point at the current position. A block
+    /// without axis words does not cut.
+    fn execute(&mut self, st: &mut State, b: &BlockIn) -> Result<(), Alarm> {
+        let (v, line) = (b.values, b.line);
+        if b.new_run {
+            self.run = Run::default();
+        }
+        st.take_lead(v);
+        self.j = v.get(b'J').or(self.j);
+        self.k = v.get(b'K').or(self.k);
+        self.l = v.get(b'L').or(self.l);
+        if let Some(r) = v.get(b'R') {
+            self.run.r = r as i128;
+        }
+        if !b.kind.axes {
+            return Ok(());
+        }
+        // G92.FORMAT / COM.LEAD: the lead is required.
+        let Some(lead) = st.feed else {
+            return Err(alarm(AlarmCode::MissingWord, b'F', Rule::ComLead, line));
+        };
+        let a = st.position();
+        let (x, z) = st.end_point(v);
+        let dx = x.or(self.run.end_x).unwrap_or(a.0);
+        let dz = z.or(self.run.end_z).unwrap_or(a.1);
+        self.run.end_x = Some(dx);
+        self.run.end_z = Some(dz);
+        self.run.index = self.run.index.saturating_add(1);
+        let l = self.l.unwrap_or(1) as u32;
+        let cycle = G92Cycle { a, d: (dx, dz), r: self.run.r, lead, j: self.j, k: self.k, l, index: self.run.index, line };
+        expand(&cycle, &st.params(), st.config.grid, &mut st.out)
+    }
+}
 
 /// One G92 cycle, all words resolved (absolute end point, modal values filled in).
 #[derive(Clone, Copy, Debug)]

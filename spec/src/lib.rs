@@ -1,5 +1,6 @@
-//! Executable reference spec of the lathe thread canned cycles G92 (M002), G76 (M001, M003
-//! FANUC-style), G78 (M000) and G162 (M004), and of the thread moves G32, G33, G34 (M003).
+//! Executable reference spec of the lathe canned cycles: the thread cycles G92 (M002), G76
+//! (M001, M003 FANUC-style), G78 (M000) and G162 (M004), the thread moves G32, G33, G34 and the
+//! single cutting cycles G90, G94 (M003).
 //!
 //! A certification reference: clarity first, exact integer arithmetic, each rule a small
 //! function whose doc comment names its rule ID (`docs/RULES.md`) and source manual key. Every
@@ -9,30 +10,38 @@
 //! |---|---|
 //! | [`config`] | COM.RANGES of the start point, parameter ranges (line 0) |
 //! | [`program`] | PRJ.MODAL, PRJ.WORD, PRJ.SUPPORTED, PRJ.DIALECT, COM.ABSINC, check order |
-//! | [`words`] | COM.UNITS, COM.RANGES, COM.LEAD, F76.MICRONS |
+//! | [`family`] | the one interface of the cycle families and their table |
+//! | [`lex`] | PRJ.LEX, PRJ.WORD: the spec's own reader of program text |
+//! | [`words`] | COM.UNITS, COM.RANGES, COM.LEAD, F76.MICRONS: exact values of words |
 //! | [`exact`], [`tangent`] | the rounding rule: half up, once, on exact values |
 //! | [`g92`] | G92.* |
 //! | [`pullout`] | G92.PULLOUT, G76.PULLOUT, G78.PULLOUT geometry, COM.LONGAXIS |
 //! | [`multipass`] | G76.*, G78.*, F76.*, PRJ.MAXPASS |
 //! | [`g162`] | G162.* (M004, `nc201`), NC201.* in [`program`] |
 //! | [`thread_moves`] | G32, G33, G34 (M003) |
+//! | [`g90`], [`g94`], [`single_cut`] | G90.*, G94.* (M003): single cutting cycles and their runs |
 //! | [`emit`] | PRJ.TRACE, PRJ.NOOP, COM.MULTISTART |
 #![forbid(unsafe_code)]
 
 pub mod config;
 pub mod emit;
 pub mod exact;
+pub mod family;
 pub mod g162;
+pub mod g90;
+pub mod g94;
 pub mod g92;
+pub mod lex;
 pub mod multipass;
 pub mod program;
 pub mod pullout;
+pub mod single_cut;
 pub mod tangent;
 pub mod thread_moves;
 pub mod words;
 
 use cycle_vocab::text::Trace;
-use cycle_vocab::{Blocks, Config};
+use cycle_vocab::Config;
 
 /// Expands a whole program into its trace. Stops at the first alarm, keeping the events emitted
 /// before it. Never panics; resource use is bounded by the program length and `max_passes`
@@ -43,7 +52,7 @@ pub fn expand(program: &[u8], config: &Config) -> Trace {
         return Trace { grid: config.grid, events: Vec::new(), alarm: Some(a) };
     }
     let mut alarm = None;
-    for block in Blocks::new(program) {
+    for block in lex::blocks(program) {
         let result = match block {
             Ok(b) => machine.block(&b),
             Err(a) => Err(a),
@@ -57,10 +66,14 @@ pub fn expand(program: &[u8], config: &Config) -> Trace {
             }
         }
     }
-    Trace { grid: config.grid, events: machine.out.events, alarm }
+    Trace { grid: config.grid, events: machine.out().events, alarm }
 }
 
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
 mod tests_g162;
+#[cfg(test)]
+mod tests_g90;
+#[cfg(test)]
+mod tests_lex;

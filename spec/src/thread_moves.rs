@@ -6,9 +6,73 @@
 //! 5) and emits it (docs/INTERPRETATION.md, "G32, G33, G34").
 
 use crate::emit::{LeadLaw, Out};
+use crate::family::{BlockIn, Code, Family, Kind, State, Words, GSK_FANUC};
 use crate::g162::long_travel_twice;
-use crate::words::{alarm, lead_max};
-use cycle_vocab::{Alarm, AlarmCode, Grid, Rule};
+use crate::words::{alarm, lead_max, Read, F, I_TPI, U, W, X, Z};
+use cycle_vocab::{Alarm, AlarmCode, Dialect, Grid, Rule};
+
+/// G32, G33, G34 as a family of the interpreter: modal thread moves; P (G33) and K (G34) are
+/// not kept.
+#[derive(Debug)]
+pub struct ThreadMoves;
+
+/// G32 words: X(U) Z(W) F|I.
+const G32_WORDS: Words = Words::of(&[F, I_TPI, U, W, X, Z]);
+/// G33 also P, the start angle in 0.001°, 0…359 999 (rule G33).
+const G33_WORDS: Words =
+    Words::of(&[F, I_TPI, (b'P', Read::Integer { lo: 0, hi: 359_999, rule: Rule::G33 }), U, W, X, Z]);
+/// G34 also K, the signed lead change per revolution on the lead grid (rule G34).
+const G34_WORDS: Words = Words::of(&[F, I_TPI, (b'K', Read::SignedLead { rule: Rule::G34 }), U, W, X, Z]);
+
+impl Family for ThreadMoves {
+    fn codes(&self) -> &'static [Code] {
+        &[Code { g: 32, dialects: GSK_FANUC }, Code { g: 33, dialects: GSK_FANUC }, Code { g: 34, dialects: GSK_FANUC }]
+    }
+    fn modal(&self) -> bool {
+        true
+    }
+    fn thread(&self) -> bool {
+        true
+    }
+    fn words(&self, kind: Kind, _: Dialect) -> Words {
+        match kind.g {
+            33 => G33_WORDS,
+            34 => G34_WORDS,
+            _ => G32_WORDS,
+        }
+    }
+
+    /// G32, G33, G34 (M003): the lead is the modal feed (`MISSING WORD F`, COM.LEAD, in a block
+    /// that moves), G34 needs its K (`MISSING WORD K`, G34). A block without axis words moves
+    /// nothing.
+    fn execute(&mut self, st: &mut State, b: &BlockIn) -> Result<(), Alarm> {
+        let (v, line) = (b.values, b.line);
+        let code = match b.kind.g {
+            33 => ThreadCode::G33,
+            34 => ThreadCode::G34,
+            _ => ThreadCode::G32,
+        };
+        st.take_lead(v);
+        if !b.kind.axes {
+            return Ok(());
+        }
+        let Some(lead) = st.feed else {
+            return Err(alarm(AlarmCode::MissingWord, b'F', Rule::ComLead, line));
+        };
+        let k = match code {
+            ThreadCode::G34 => match v.get(b'K') {
+                Some(k) => k,
+                None => return Err(alarm(AlarmCode::MissingWord, b'K', Rule::G34, line)),
+            },
+            _ => 0,
+        };
+        let from = st.position();
+        let (x, z) = st.end_point(v);
+        let angle = v.get(b'P').unwrap_or(0) as u32;
+        let m = ThreadMove { code, from, to: (x.unwrap_or(from.0), z.unwrap_or(from.1)), lead, angle, k, line };
+        expand(&m, st.config.grid, &mut st.out)
+    }
+}
 
 /// Which thread move.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -1,10 +1,14 @@
 //! Word → value (COM.UNITS, COM.RANGES, COM.LEAD, PRJ.DIALECT, F76.MICRONS).
 //!
-//! Every function takes a [`Number`] exactly as written and returns an integer on its grid, or
-//! the alarm the register names (docs/INTERPRETATION.md, "Numbers, units, grid" and "Ranges").
+//! Every function takes a [`Number`] exactly as written (the spec's own reader, [`crate::lex`])
+//! and returns an integer on its grid, or the alarm the register names (docs/INTERPRETATION.md,
+//! "Values (check step 3)", "Numbers, units, grid" and "Ranges"). The arithmetic is exact
+//! (BigInt): a value is out of range under its word's own rule however large it is.
 
-use cycle_vocab::units::NumberError;
-use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Grid, Number, Rule, Units};
+use crate::lex::Number;
+use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Grid, Rule, Units};
+use num_bigint::BigInt;
+use num_traits::{ToPrimitive, Zero};
 
 /// N = 999 999 999 increments: the nine-digit range of every length word (COM.RANGES).
 pub const N: i64 = 999_999_999;
@@ -16,69 +20,85 @@ pub fn alarm(code: AlarmCode, word: u8, rule: Rule, line: u32) -> Alarm {
     Alarm::new(code, Some(word), rule, line)
 }
 
-/// COM.UNITS (M000, M001) / COM.RANGES: a number that does not fit its grid. More decimals than
-/// the grid is `PRECISION` (never a rounding); too large is `OUT OF RANGE`; a decimal point in an
-/// integer word is `NOT INTEGER`.
-fn number_alarm(e: NumberError, word: u8, line: u32) -> Alarm {
-    match e {
-        NumberError::Precision => alarm(AlarmCode::Precision, word, Rule::ComUnits, line),
-        NumberError::Overflow => alarm(AlarmCode::OutOfRange, word, Rule::ComRanges, line),
-        NumberError::NotInteger => alarm(AlarmCode::NotInteger, word, Rule::ComRanges, line),
+fn pow10(n: u32) -> BigInt {
+    num_traits::pow(BigInt::from(10), n as usize)
+}
+
+/// COM.UNITS (M000, M001): the value as a whole count of 10^−`p`. More decimals than that,
+/// unless they are zeros, is `PRECISION` (never a rounding).
+pub fn count(n: &Number, p: u32, word: u8, line: u32) -> Result<BigInt, Alarm> {
+    let m = n.mantissa();
+    if n.decimals <= p {
+        return Ok(m * pow10(p - n.decimals));
+    }
+    let unit = pow10(n.decimals - p);
+    if (&m % &unit).is_zero() {
+        Ok(m / unit)
+    } else {
+        Err(alarm(AlarmCode::Precision, word, Rule::ComUnits, line))
     }
 }
 
-/// COM.RANGES (M000, M001, M002): `lo ≤ v ≤ hi`, else `OUT OF RANGE` under `rule`; never a clamp.
-pub fn within(v: i64, lo: i64, hi: i64, word: u8, rule: Rule, line: u32) -> Result<i64, Alarm> {
-    if (lo..=hi).contains(&v) {
-        Ok(v)
+/// COM.RANGES: an integer word must be written without a decimal point, else `NOT INTEGER`.
+pub fn whole(n: &Number, word: u8, line: u32) -> Result<BigInt, Alarm> {
+    if n.point {
+        Err(alarm(AlarmCode::NotInteger, word, Rule::ComRanges, line))
     } else {
-        Err(alarm(AlarmCode::OutOfRange, word, rule, line))
+        Ok(n.mantissa())
+    }
+}
+
+/// COM.RANGES (M000, M001, M002): `lo ≤ v ≤ hi`, else `OUT OF RANGE` under `rule` however large
+/// `v` is; never a clamp.
+pub fn in_range(v: &BigInt, lo: i64, hi: i64, word: u8, rule: Rule, line: u32) -> Result<i64, Alarm> {
+    match v.to_i64() {
+        Some(v) if (lo..=hi).contains(&v) => Ok(v),
+        _ => Err(alarm(AlarmCode::OutOfRange, word, rule, line)),
     }
 }
 
 /// COM.UNITS + COM.RANGES: a length word as a count of the least increment (a value without a
 /// decimal point is in mm / inch, PRJ.DIALECT), in `lo…hi`.
-pub fn length(n: Number, word: u8, grid: Grid, lo: i64, hi: i64, line: u32) -> Result<i64, Alarm> {
-    let v = n.scaled(grid.decimals()).map_err(|e| number_alarm(e, word, line))?;
-    within(v, lo, hi, word, Rule::ComRanges, line)
+pub fn length(n: &Number, word: u8, grid: Grid, lo: i64, hi: i64, line: u32) -> Result<i64, Alarm> {
+    let v = count(n, grid.decimals(), word, line)?;
+    in_range(&v, lo, hi, word, Rule::ComRanges, line)
 }
 
 /// F76.MICRONS (M003), PRJ.DIALECT: G76 P(k), Q(Δd), Q(Δdmin). Under `fanuc`, written without a
 /// decimal point they are integers in the least increment; otherwise they are lengths.
-pub fn micron_length(n: Number, word: u8, config: &Config, lo: i64, hi: i64, line: u32) -> Result<i64, Alarm> {
+pub fn micron_length(n: &Number, word: u8, config: &Config, lo: i64, hi: i64, line: u32) -> Result<i64, Alarm> {
     if config.dialect == Dialect::Fanuc && !n.point {
-        let v = n.integer().map_err(|e| number_alarm(e, word, line))?;
-        within(v, lo, hi, word, Rule::ComRanges, line)
+        in_range(&n.mantissa(), lo, hi, word, Rule::ComRanges, line)
     } else {
         length(n, word, config.grid, lo, hi, line)
     }
 }
 
-/// COM.RANGES: a count or digit word (L, P of the first block, D), written without a decimal
-/// point (`NOT INTEGER`), in `lo…hi` (`OUT OF RANGE` under `rule`).
-pub fn integer(n: Number, word: u8, lo: i64, hi: i64, rule: Rule, line: u32) -> Result<i64, Alarm> {
-    let v = n.integer().map_err(|e| number_alarm(e, word, line))?;
-    within(v, lo, hi, word, rule, line)
+/// COM.RANGES: a count or digit word (L, P of the first block, D, G33 P), written without a
+/// decimal point (`NOT INTEGER`), in `lo…hi` (`OUT OF RANGE` under `rule`).
+pub fn integer(n: &Number, word: u8, lo: i64, hi: i64, rule: Rule, line: u32) -> Result<i64, Alarm> {
+    let v = whole(n, word, line)?;
+    in_range(&v, lo, hi, word, rule, line)
 }
 
 /// COM.LEAD (M001, M002): F is the lead, an integer count of 0.0001 mm (metric) or 0.00001 in
 /// (inch) in both increment systems; range 0.0001…9999 mm / 0.00001…9.99 in.
-pub fn lead_from_f(n: Number, grid: Grid, line: u32) -> Result<i64, Alarm> {
-    let v = n.scaled(grid.lead_decimals()).map_err(|e| number_alarm(e, b'F', line))?;
-    within(v, 1, lead_max(grid), b'F', Rule::ComRanges, line)
+pub fn lead_from_f(n: &Number, grid: Grid, line: u32) -> Result<i64, Alarm> {
+    let v = count(n, grid.lead_decimals(), b'F', line)?;
+    in_range(&v, 1, lead_max(grid), b'F', Rule::ComRanges, line)
 }
 
 /// COM.LEAD (M001, M002): I is threads per inch (0.0001…254 metric, 0.0001…100 inch, at most 4
 /// decimals); it becomes a lead once, rounded half up to the lead grid: metric 25.4/I mm =
 /// 2 540 000 000 / I₄ counts of 0.0001 mm, inch 1/I in = 1 000 000 000 / I₄ counts of
 /// 0.00001 in, where I₄ is I in 0.0001 threads per inch.
-pub fn lead_from_i(n: Number, grid: Grid, line: u32) -> Result<i64, Alarm> {
-    let i4 = n.scaled(4).map_err(|e| number_alarm(e, b'I', line))?;
+pub fn lead_from_i(n: &Number, grid: Grid, line: u32) -> Result<i64, Alarm> {
+    let i4 = count(n, 4, b'I', line)?;
     let (max, numerator) = match grid.units {
         Units::Metric => (254 * 10_000, 2_540_000_000i128),
         Units::Inch => (100 * 10_000, 1_000_000_000i128),
     };
-    let i4 = within(i4, 1, max, b'I', Rule::ComRanges, line)?;
+    let i4 = in_range(&i4, 1, max, b'I', Rule::ComRanges, line)?;
     let lead = crate::exact::round_div(numerator, i4 as i128);
     Ok(lead as i64)
 }
@@ -93,89 +113,180 @@ pub fn lead_max(grid: Grid) -> i64 {
 
 /// A signed value on the lead grid (G162 I, G34 K, docs/INTERPRETATION.md): `|v| ≤ max`, else
 /// `OUT OF RANGE` under `rule`.
-pub fn signed_lead(n: Number, word: u8, grid: Grid, max: i64, rule: Rule, line: u32) -> Result<i64, Alarm> {
-    let v = n.scaled(grid.lead_decimals()).map_err(|e| number_alarm(e, word, line))?;
-    within(v, -max, max, word, rule, line)
+pub fn signed_lead(n: &Number, word: u8, grid: Grid, max: i64, rule: Rule, line: u32) -> Result<i64, Alarm> {
+    let v = count(n, grid.lead_decimals(), word, line)?;
+    in_range(&v, -max, max, word, rule, line)
 }
 
 /// A feed on the lead grid (G162.H): `1 ≤ v ≤ hi`, else `OUT OF RANGE` under `rule`.
-pub fn feed(n: Number, word: u8, grid: Grid, hi: i64, rule: Rule, line: u32) -> Result<i64, Alarm> {
-    let v = n.scaled(grid.lead_decimals()).map_err(|e| number_alarm(e, word, line))?;
-    within(v, 1, hi, word, rule, line)
+pub fn feed(n: &Number, word: u8, grid: Grid, hi: i64, rule: Rule, line: u32) -> Result<i64, Alarm> {
+    let v = count(n, grid.lead_decimals(), word, line)?;
+    in_range(&v, 1, hi, word, rule, line)
 }
 
 /// An angle in degrees on the 0.001° grid (G162 B, J): `lo ≤ v ≤ hi` in 0.001°, else
 /// `OUT OF RANGE` under `rule`.
-pub fn millidegrees(n: Number, word: u8, lo: i64, hi: i64, rule: Rule, line: u32) -> Result<i64, Alarm> {
-    let v = n.scaled(3).map_err(|e| number_alarm(e, word, line))?;
-    within(v, lo, hi, word, rule, line)
+pub fn millidegrees(n: &Number, word: u8, lo: i64, hi: i64, rule: Rule, line: u32) -> Result<i64, Alarm> {
+    let v = count(n, 3, word, line)?;
+    in_range(&v, lo, hi, word, rule, line)
 }
 
 /// G162.A (M004, docs/INTERPRETATION.md): the infeed angle in half degrees. Read on the 0.1°
-/// grid (generic number errors); a value that is not a multiple of 0.5° is `PRECISION` on A,
+/// grid (`PRECISION`, COM.UNITS); a value that is not a multiple of 0.5° is `PRECISION` on A,
 /// rule G162.A; |A| > 89° is `OUT OF RANGE` on A, rule G162.A.
-pub fn half_degrees(n: Number, word: u8, line: u32) -> Result<i64, Alarm> {
-    let tenths = n.scaled(1).map_err(|e| number_alarm(e, word, line))?;
-    if tenths % 5 != 0 {
+pub fn half_degrees(n: &Number, word: u8, line: u32) -> Result<i64, Alarm> {
+    let tenths = count(n, 1, word, line)?;
+    if !(&tenths % BigInt::from(5)).is_zero() {
         return Err(alarm(AlarmCode::Precision, word, Rule::G162A, line));
     }
-    within(tenths, -890, 890, word, Rule::G162A, line).map(|t| t / 5)
+    in_range(&tenths, -890, 890, word, Rule::G162A, line).map(|t| t / 5)
 }
+
+/// How a word's value is read (check step 3): each family's word table names one per word.
+#[derive(Clone, Copy, Debug)]
+pub enum Read {
+    /// A length on the grid in `lo…hi` increments (COM.UNITS, COM.RANGES).
+    Length { lo: i64, hi: i64 },
+    /// A signed length in X units, |v| ≤ N: a diameter, or under `nc201` with `x_radius` = 1 a
+    /// radius counted twice (NC201.XMODE).
+    XLength,
+    /// A length, or under `fanuc` without a point an integer count of increments (F76.MICRONS).
+    Microns { lo: i64, hi: i64 },
+    /// F, the lead / feed (COM.LEAD).
+    Lead,
+    /// I, threads per inch, as a lead (COM.LEAD).
+    ThreadsPerInch,
+    /// An integer without a point in `lo…hi`, out of range under `rule`.
+    Integer { lo: i64, hi: i64, rule: Rule },
+    /// A signed value on the lead grid, |v| ≤ the F maximum, out of range under `rule`.
+    SignedLead { rule: Rule },
+    /// A feed on the lead grid in 1…`hi`, out of range under `rule`.
+    Feed { hi: i64, rule: Rule },
+    /// Degrees on the 0.001° grid in `lo…hi`, out of range under `rule`.
+    Millidegrees { lo: i64, hi: i64, rule: Rule },
+    /// G162.A: degrees in half-degree steps.
+    HalfDegrees,
+    /// A reader of the family's own (e.g. the digits of P(m)(r)(a)).
+    Own(fn(&Number, u8, &Config, u32) -> Result<i64, Alarm>),
+}
+
+impl Read {
+    /// The value of `n`, written as word `letter` on `line`, under `config`.
+    pub fn value(self, n: &Number, letter: u8, config: &Config, line: u32) -> Result<i64, Alarm> {
+        let grid = config.grid;
+        match self {
+            Read::Length { lo, hi } => length(n, letter, grid, lo, hi, line),
+            Read::XLength => length(n, letter, grid, -N, N, line).map(|v| x_units(v, config)),
+            Read::Microns { lo, hi } => micron_length(n, letter, config, lo, hi, line),
+            Read::Lead => lead_from_f(n, grid, line),
+            Read::ThreadsPerInch => lead_from_i(n, grid, line),
+            Read::Integer { lo, hi, rule } => integer(n, letter, lo, hi, rule, line),
+            Read::SignedLead { rule } => signed_lead(n, letter, grid, lead_max(grid), rule, line),
+            Read::Feed { hi, rule } => feed(n, letter, grid, hi, rule, line),
+            Read::Millidegrees { lo, hi, rule } => millidegrees(n, letter, lo, hi, rule, line),
+            Read::HalfDegrees => half_degrees(n, letter, line),
+            Read::Own(read) => read(n, letter, config, line),
+        }
+    }
+}
+
+/// NC201.XMODE (M004): under `nc201` with `x_radius` = 1 an X or W word is a radius, counted
+/// twice on the diameter grid; otherwise the value is already a diameter.
+pub fn x_units(v: i64, config: &Config) -> i64 {
+    if config.dialect == Dialect::Nc201 && crate::config::params(config).x_radius == 1 {
+        2 * v
+    } else {
+        v
+    }
+}
+
+/// Common word tables: the axis words X U Z W and F as everywhere (COM.ABSINC, COM.LEAD).
+pub const X: (u8, Read) = (b'X', Read::XLength);
+pub const U: (u8, Read) = (b'U', Read::Length { lo: -N, hi: N });
+pub const Z: (u8, Read) = (b'Z', Read::Length { lo: -N, hi: N });
+pub const W: (u8, Read) = (b'W', Read::Length { lo: -N, hi: N });
+pub const F: (u8, Read) = (b'F', Read::Lead);
+/// I as threads per inch (thread blocks, COM.LEAD).
+pub const I_TPI: (u8, Read) = (b'I', Read::ThreadsPerInch);
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn num(s: &str) -> Number {
-        let src = format!("X{s}");
-        match cycle_vocab::Blocks::new(src.as_bytes()).next() {
-            Some(Ok(b)) => b.get(b'X').expect("X"),
-            _ => panic!("bad test number {s}"),
-        }
+        Number::parse(s).unwrap_or_else(|| panic!("bad test number {s}"))
     }
 
     #[test]
     fn lengths_and_leads() {
         let g = Grid::METRIC_ISB;
-        assert_eq!(length(num("58.7"), b'X', g, -N, N, 1), Ok(58_700));
-        assert_eq!(length(num("60"), b'X', g, -N, N, 1), Ok(60_000));
+        assert_eq!(length(&num("58.7"), b'X', g, -N, N, 1), Ok(58_700));
+        assert_eq!(length(&num("60"), b'X', g, -N, N, 1), Ok(60_000));
+        assert_eq!(length(&num("58.7000"), b'X', g, -N, N, 1), Ok(58_700));
+        assert_eq!(length(&num("-0.000000000000000000"), b'X', g, -N, N, 1), Ok(0));
         assert_eq!(
-            length(num("58.7001"), b'X', g, -N, N, 1),
+            length(&num("58.7001"), b'X', g, -N, N, 1),
             Err(alarm(AlarmCode::Precision, b'X', Rule::ComUnits, 1))
         );
         assert_eq!(
-            length(num("1000000"), b'X', g, -N, N, 1),
+            length(&num("1000000"), b'X', g, -N, N, 1),
             Err(alarm(AlarmCode::OutOfRange, b'X', Rule::ComRanges, 1))
         );
-        assert_eq!(lead_from_f(num("3"), g, 1), Ok(30_000));
-        assert_eq!(lead_from_i(num("24"), g, 1), Ok(10_583)); // 25.4/24 = 1.05833
-        assert_eq!(lead_from_i(num("254"), g, 1), Ok(1_000));
+        assert_eq!(lead_from_f(&num("3"), g, 1), Ok(30_000));
+        assert_eq!(lead_from_i(&num("24"), g, 1), Ok(10_583)); // 25.4/24 = 1.05833
+        assert_eq!(lead_from_i(&num("254"), g, 1), Ok(1_000));
         let fanuc = Config { dialect: Dialect::Fanuc, ..Config::default() };
-        assert_eq!(micron_length(num("2400"), b'P', &fanuc, 1, N, 1), Ok(2_400));
-        assert_eq!(micron_length(num("2.4"), b'P', &fanuc, 1, N, 1), Ok(2_400));
-        assert_eq!(micron_length(num("2400"), b'P', &Config::default(), 1, N, 1), Ok(2_400_000));
+        assert_eq!(micron_length(&num("2400"), b'P', &fanuc, 1, N, 1), Ok(2_400));
+        assert_eq!(micron_length(&num("2.4"), b'P', &fanuc, 1, N, 1), Ok(2_400));
+        assert_eq!(micron_length(&num("2400"), b'P', &Config::default(), 1, N, 1), Ok(2_400_000));
+    }
+
+    /// "Values (check step 3)": precision first, then the range under the word's own rule,
+    /// however large the value (18 digits, beyond any machine word once scaled).
+    #[test]
+    fn huge_values_are_out_of_range_under_their_rule() {
+        let g = Grid::METRIC_ISB;
+        let big = "999999999999999999";
+        let out = |w: u8, r: Rule| Err(alarm(AlarmCode::OutOfRange, w, r, 1));
+        assert_eq!(length(&num(big), b'X', g, -N, N, 1), out(b'X', Rule::ComRanges));
+        assert_eq!(length(&num(&format!("-{big}")), b'X', g, -N, N, 1), out(b'X', Rule::ComRanges));
+        assert_eq!(feed(&num(big), b'H', g, N, Rule::G162H, 1), out(b'H', Rule::G162H));
+        assert_eq!(signed_lead(&num(big), b'I', g, lead_max(g), Rule::G162I, 1), out(b'I', Rule::G162I));
+        assert_eq!(millidegrees(&num(big), b'J', 1, N, Rule::G162J, 1), out(b'J', Rule::G162J));
+        assert_eq!(half_degrees(&num("99999999999999999.5"), b'A', 1), out(b'A', Rule::G162A));
+        assert_eq!(integer(&num(big), b'D', 0, 2, Rule::G76Mode, 1), out(b'D', Rule::G76Mode));
+        assert_eq!(lead_from_i(&num(big), g, 1), out(b'I', Rule::ComRanges));
+        // Precision is decided before the range.
+        assert_eq!(
+            feed(&num("9999999999999.99999"), b'H', g, N, Rule::G162H, 1),
+            Err(alarm(AlarmCode::Precision, b'H', Rule::ComUnits, 1))
+        );
+        assert_eq!(
+            integer(&num("999999999999999999."), b'L', 1, 99, Rule::ComRanges, 1),
+            Err(alarm(AlarmCode::NotInteger, b'L', Rule::ComRanges, 1))
+        );
     }
 
     #[test]
     fn g162_angles_feeds_and_signed_leads() {
         let g = Grid::METRIC_ISB;
-        assert_eq!(half_degrees(num("27.5"), b'A', 1), Ok(55));
-        assert_eq!(half_degrees(num("-30"), b'A', 1), Ok(-60));
-        assert_eq!(half_degrees(num("30.00"), b'A', 1), Ok(60));
-        assert_eq!(half_degrees(num("27.3"), b'A', 1), Err(alarm(AlarmCode::Precision, b'A', Rule::G162A, 1)));
-        assert_eq!(half_degrees(num("27.25"), b'A', 1), Err(alarm(AlarmCode::Precision, b'A', Rule::ComUnits, 1)));
-        assert_eq!(half_degrees(num("89.5"), b'A', 1), Err(alarm(AlarmCode::OutOfRange, b'A', Rule::G162A, 1)));
-        assert_eq!(millidegrees(num("90.5"), b'B', 0, 360_000, Rule::G162B, 1), Ok(90_500));
+        assert_eq!(half_degrees(&num("27.5"), b'A', 1), Ok(55));
+        assert_eq!(half_degrees(&num("-30"), b'A', 1), Ok(-60));
+        assert_eq!(half_degrees(&num("30.00"), b'A', 1), Ok(60));
+        assert_eq!(half_degrees(&num("27.3"), b'A', 1), Err(alarm(AlarmCode::Precision, b'A', Rule::G162A, 1)));
+        assert_eq!(half_degrees(&num("27.25"), b'A', 1), Err(alarm(AlarmCode::Precision, b'A', Rule::ComUnits, 1)));
+        assert_eq!(half_degrees(&num("89.5"), b'A', 1), Err(alarm(AlarmCode::OutOfRange, b'A', Rule::G162A, 1)));
+        assert_eq!(millidegrees(&num("90.5"), b'B', 0, 360_000, Rule::G162B, 1), Ok(90_500));
         assert_eq!(
-            millidegrees(num("360.001"), b'B', 0, 360_000, Rule::G162B, 1),
+            millidegrees(&num("360.001"), b'B', 0, 360_000, Rule::G162B, 1),
             Err(alarm(AlarmCode::OutOfRange, b'B', Rule::G162B, 1))
         );
-        assert_eq!(signed_lead(num("-0.5"), b'I', g, lead_max(g), Rule::G162I, 1), Ok(-5_000));
+        assert_eq!(signed_lead(&num("-0.5"), b'I', g, lead_max(g), Rule::G162I, 1), Ok(-5_000));
         assert_eq!(
-            signed_lead(num("10000"), b'K', g, lead_max(g), Rule::G34, 1),
+            signed_lead(&num("10000"), b'K', g, lead_max(g), Rule::G34, 1),
             Err(alarm(AlarmCode::OutOfRange, b'K', Rule::G34, 1))
         );
-        assert_eq!(feed(num("500"), b'H', g, N, Rule::G162H, 1), Ok(5_000_000));
-        assert_eq!(feed(num("0"), b'H', g, N, Rule::G162H, 1), Err(alarm(AlarmCode::OutOfRange, b'H', Rule::G162H, 1)));
+        assert_eq!(feed(&num("500"), b'H', g, N, Rule::G162H, 1), Ok(5_000_000));
+        assert_eq!(feed(&num("0"), b'H', g, N, Rule::G162H, 1), Err(alarm(AlarmCode::OutOfRange, b'H', Rule::G162H, 1)));
     }
 }

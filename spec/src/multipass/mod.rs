@@ -12,6 +12,7 @@
 
 pub mod infeed;
 pub mod schedule;
+pub mod unit;
 
 use crate::emit::{start_angle, Out};
 use crate::exact::round_div;

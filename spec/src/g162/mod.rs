@@ -8,6 +8,8 @@
 //! checks the cycle (check step 5) and emits it. Every choice is the one recorded in
 //! docs/INTERPRETATION.md, "G162 (M004)".
 
+pub mod unit;
+
 use crate::emit::{LeadLaw, Out};
 use crate::exact::{isqrt, round_div};
 use crate::multipass::check_max_passes;

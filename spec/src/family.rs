@@ -1,0 +1,189 @@
+//! One interface for every cycle family (PRJ.SUPPORTED, PRJ.DIALECT, PRJ.WORD, PRJ.MODAL).
+//!
+//! The shared interpreter ([`crate::program`]) knows the G codes, the modal state, the
+//! conflicts, the check order, G00/G01, the position and the feed. Everything a family adds is
+//! behind [`Family`]: which G codes select it under which dialects, which words each of its
+//! blocks accepts and how each value is read, and the handler that executes a block. Adding a
+//! family is its module and one entry in [`table`].
+
+use crate::config::{params, Params};
+use crate::emit::Out;
+use crate::words::Read;
+use cycle_vocab::{Config, Dialect, Rule};
+
+/// A G code of a family and the dialects that have it; under any other dialect it is
+/// `UNSUPPORTED CODE`, rule PRJ.DIALECT.
+#[derive(Clone, Copy, Debug)]
+pub struct Code {
+    pub g: u32,
+    pub dialects: &'static [Dialect],
+}
+
+/// `gsk` and `fanuc`: the codes of M001, M002, M003.
+pub const GSK_FANUC: &[Dialect] = &[Dialect::Gsk, Dialect::Fanuc];
+
+/// The words a block accepts (besides G N O M S T) and how each is read; any other word is
+/// `WORD NOT ALLOWED`, rule PRJ.WORD, except the letters of `refused` (a stricter format than
+/// the GSK one), which name `refused.1`.
+#[derive(Clone, Copy, Debug)]
+pub struct Words {
+    pub accepted: &'static [(u8, Read)],
+    pub refused: (&'static [u8], Rule),
+}
+
+impl Words {
+    /// A block that accepts `accepted`.
+    pub const fn of(accepted: &'static [(u8, Read)]) -> Words {
+        Words { accepted, refused: (&[], Rule::PrjWord) }
+    }
+
+    /// How `letter` is read, `None` when the block does not accept it.
+    pub fn read(&self, letter: u8) -> Option<Read> {
+        self.accepted.iter().find(|(l, _)| *l == letter).map(|(_, r)| *r)
+    }
+
+    /// The rule `WORD NOT ALLOWED` names for `letter`.
+    pub fn refusal(&self, letter: u8) -> Rule {
+        if self.refused.0.contains(&letter) {
+            self.refused.1
+        } else {
+            Rule::PrjWord
+        }
+    }
+}
+
+/// A block as the interpreter hands it to a family.
+#[derive(Clone, Copy, Debug)]
+pub struct Kind {
+    /// The family's code: written in the block, or the modal one.
+    pub g: u32,
+    /// Whether the block has an axis word X, U, Z or W.
+    pub axes: bool,
+}
+
+/// What the handler of a block receives besides the machine state.
+#[derive(Clone, Copy, Debug)]
+pub struct BlockIn<'v> {
+    pub kind: Kind,
+    /// The motion mode before the block was another one (a modal family starts a new run).
+    pub new_run: bool,
+    pub values: &'v Values,
+    pub line: u32,
+}
+
+/// One cycle family.
+pub trait Family {
+    /// The family's G codes (PRJ.SUPPORTED, PRJ.DIALECT).
+    fn codes(&self) -> &'static [Code];
+    /// Whether its codes are motion modes (PRJ.MODAL): a later block with no motion code runs
+    /// the same code again. Otherwise they are one-shot and leave the motion mode unchanged.
+    fn modal(&self) -> bool;
+    /// Whether I is threads per inch in its blocks, so that F with I is a `CONFLICT` (COM.LEAD).
+    fn thread(&self) -> bool;
+    /// The words a block of this kind accepts under `dialect` (PRJ.WORD, check steps 2 and 3).
+    fn words(&self, kind: Kind, dialect: Dialect) -> Words;
+    /// Executes a block whose words are allowed and read (check steps 4 and 5, then the moves).
+    fn execute(&mut self, st: &mut State, b: &BlockIn) -> Result<(), cycle_vocab::Alarm>;
+}
+
+/// The spec's families, in no particular order (each G code belongs to one).
+pub fn table() -> Vec<Box<dyn Family>> {
+    vec![
+        Box::new(crate::g92::G92::default()),
+        Box::new(crate::multipass::unit::Multipass::default()),
+        Box::new(crate::thread_moves::ThreadMoves),
+        Box::new(crate::g162::unit::G162),
+        Box::new(crate::g90::G90::default()),
+        Box::new(crate::g94::G94::default()),
+    ]
+}
+
+/// The values of one block's words, by letter (lengths in increments, leads in lead counts).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Values([Option<i64>; 26]);
+
+impl Values {
+    fn index(letter: u8) -> Option<usize> {
+        letter.is_ascii_uppercase().then(|| (letter - b'A') as usize)
+    }
+    /// The value of `letter` (upper case), `None` when the block does not write it.
+    pub fn get(&self, letter: u8) -> Option<i64> {
+        Values::index(letter).and_then(|i| self.0[i])
+    }
+    pub fn set(&mut self, letter: u8, v: i64) {
+        if let Some(i) = Values::index(letter) {
+            self.0[i] = Some(v);
+        }
+    }
+}
+
+/// The machine state a family works on (PRJ.MODAL): the trace and position, the modal feed.
+pub struct State<'c> {
+    pub config: &'c Config,
+    pub out: Out,
+    /// The one modal feed / lead value, lead counts (COM.LEAD).
+    pub feed: Option<i64>,
+    /// NC201.ABSINC: G91 (X and Z are distances from the position before the block).
+    pub incremental: bool,
+}
+
+impl State<'_> {
+    /// The parameters of the configuration, each set value or its default.
+    pub fn params(&self) -> Params {
+        params(self.config)
+    }
+
+    /// The current position (X diameter, Z), increments.
+    pub fn position(&self) -> (i128, i128) {
+        (self.out.x as i128, self.out.z as i128)
+    }
+
+    /// COM.LEAD (M001, M002): F and I set one modal feed value (never both in a thread block:
+    /// conflicts).
+    pub fn take_lead(&mut self, v: &Values) {
+        if let Some(f) = v.get(b'F').or(v.get(b'I')) {
+            self.feed = Some(f);
+        }
+    }
+
+    /// COM.LEAD: F alone sets the modal feed (blocks where I is no lead: G90, G94, G162).
+    pub fn take_feed(&mut self, v: &Values) {
+        if let Some(f) = v.get(b'F') {
+            self.feed = Some(f);
+        }
+    }
+
+    /// COM.ABSINC (M001, M002): the end point of X(U) and Z(W), `None` for an omitted axis.
+    /// NC201.ABSINC (M004): under `nc201`, X and Z are positions (G90) or distances from the
+    /// current position (G91).
+    pub fn end_point(&self, v: &Values) -> (Option<i128>, Option<i128>) {
+        let (px, pz) = self.position();
+        if self.config.dialect == Dialect::Nc201 {
+            let (bx, bz) = if self.incremental { (px, pz) } else { (0, 0) };
+            return (v.get(b'X').map(|x| bx + x as i128), v.get(b'Z').map(|z| bz + z as i128));
+        }
+        let x = v.get(b'X').map(i128::from).or(v.get(b'U').map(|u| px + u as i128));
+        let z = v.get(b'Z').map(i128::from).or(v.get(b'W').map(|w| pz + w as i128));
+        (x, z)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each G code belongs to one family, and no family takes G00/G01, G90/G91 under `nc201`,
+    /// or a no-motion code.
+    #[test]
+    fn each_code_has_one_family() {
+        let mut seen = Vec::new();
+        for f in table() {
+            for c in f.codes() {
+                assert!(!seen.contains(&c.g), "G{} twice", c.g);
+                assert!(![0, 1, 18, 20, 21, 40, 91, 97, 99].contains(&c.g), "G{}", c.g);
+                assert!(!(c.g == 90 && c.dialects.contains(&Dialect::Nc201)));
+                seen.push(c.g);
+            }
+        }
+    }
+}
