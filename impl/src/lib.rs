@@ -30,14 +30,17 @@ mod emit;
 pub mod fixed;
 pub mod g162;
 mod g92;
+pub mod lex;
 mod modal;
 mod multipass;
+pub mod number;
 mod pullout;
 pub mod schedule;
 mod thread_move;
 mod words;
 
-use cycle_vocab::{Alarm, Block, Blocks, Config, Event};
+use cycle_vocab::{Alarm, Config, Event};
+use lex::{Block, Blocks};
 
 /// N: the largest length of any word or parameter, increments (COM.RANGES).
 pub use words::MAX_LENGTH;

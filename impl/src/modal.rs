@@ -13,7 +13,9 @@ use crate::thread_move::{thread_move, ThreadCode, ThreadWords, MAX_START_ANGLE};
 use crate::words::{
     infeed_angle, integer_in, lead_f, lead_i, length_in, scaled_in, signed_length, signed_lead, At, MAX_G92_JK, MAX_LENGTH,
 };
-use cycle_vocab::{letter_bit, letter_mask, Alarm, AlarmCode, Block, Config, Dialect, Move, Number, Rule, Units};
+use crate::lex::{letter_bit, letter_mask, Block};
+use crate::number::Number;
+use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Move, Rule, Units};
 
 /// The modal motion mode.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -2,8 +2,8 @@
 //! range (COM.UNITS, COM.RANGES, COM.LEAD, PRJ.DIALECT / F76.MICRONS). Each function names the
 //! alarm of docs/INTERPRETATION.md, "Which alarm, exactly".
 
-use cycle_vocab::units::NumberError;
-use cycle_vocab::{Alarm, AlarmCode, Grid, Number, Rule, Units};
+use crate::number::{Number, NumberError};
+use cycle_vocab::{Alarm, AlarmCode, Grid, Rule, Units};
 
 /// N: the largest length of any word or parameter, increments (COM.RANGES).
 pub const MAX_LENGTH: i64 = 999_999_999;
