@@ -3,8 +3,8 @@
 //!
 //! A program is words — an address letter (either case) and a number — grouped into blocks.
 //! Spaces, tabs, CR and `%` may stand anywhere between tokens, `(comments)` close on their line,
-//! `;` or a newline ends a block, `O` and `N` numbers are ordinary words the expander ignores.
-//! Anything else is an alarm naming the byte
+//! `;` or a newline ends a block, `O` and `N` numbers are ordinary words the expander ignores, a
+//! UTF-8 byte-order mark at the very start is skipped. Anything else is an alarm naming the byte
 //! and its line. The lexer stops at the first alarm.
 
 use crate::number::Number;
@@ -152,9 +152,15 @@ pub struct Blocks<'a> {
     done: bool,
 }
 
+/// The UTF-8 byte-order mark, skipped as the program's first three bytes (PRJ.LEX).
+const BOM: [u8; 3] = [0xEF, 0xBB, 0xBF];
+
 impl<'a> Blocks<'a> {
+    /// The blocks of `src`; a byte-order mark as its first three bytes is skipped (PRJ.LEX:
+    /// editors on Windows write it). Anywhere else its first byte is a bad character.
     pub fn new(src: &'a [u8]) -> Blocks<'a> {
-        Blocks { src, pos: 0, line: 1, done: false }
+        let pos = if src.starts_with(&BOM) { BOM.len() } else { 0 };
+        Blocks { src, pos, line: 1, done: false }
     }
 
     fn peek(&self) -> Option<u8> {

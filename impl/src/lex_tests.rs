@@ -167,3 +167,18 @@ fn random_bytes_never_panic() {
         }
     }
 }
+
+/// PRJ.LEX: a byte-order mark as the first three bytes is skipped, anywhere else (or cut
+/// short) its first byte is a bad character.
+#[test]
+fn byte_order_mark_only_at_the_start() {
+    let b = blocks("\u{feff}G0 X1\nZ2");
+    assert_eq!(b.len(), 2);
+    assert_eq!((b[0].unwrap().line, b[1].unwrap().line), (1, 2));
+    assert!(blocks("\u{feff}").is_empty());
+    let bad = |line| Err(Alarm::new(AlarmCode::BadCharacter, Some(0xEF), Rule::PrjLex, line));
+    assert_eq!(blocks("\u{feff}\u{feff}X1")[0], bad(1));
+    assert_eq!(blocks("X1\n\u{feff}X1")[1], bad(2));
+    assert_eq!(Blocks::new(b"\xef\xbb").next(), Some(bad(1)));
+    assert_eq!(Blocks::new(b"\xef").next(), Some(bad(1)));
+}

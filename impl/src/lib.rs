@@ -215,3 +215,6 @@ mod tests;
 
 #[cfg(test)]
 mod g162_tests;
+
+#[cfg(test)]
+mod front_tests;

@@ -144,20 +144,6 @@ impl Machine {
         let at = |letter: u8| At { letter, line };
         let (motion, end, absinc) = self.codes(b)?;
         let nc201 = self.config.dialect == Dialect::Nc201;
-        // (2) conflicts: X/U, Z/W, F/I (the two-motion-code and G90/G91 conflicts are found in
-        // `codes`). Under nc201 U and W are no incremental addresses and I is G162's pitch
-        // change, so none of these pairs exists there (NC201.ABSINC).
-        for (first, second, rule) in
-            [(b'X', b'U', Rule::ComAbsInc), (b'Z', b'W', Rule::ComAbsInc), (b'F', b'I', Rule::ComLead)]
-        {
-            if !nc201 && b.has(first) && b.has(second) {
-                return Err(at(second).alarm(AlarmCode::Conflict, rule));
-            }
-        }
-        if let Some(incremental) = absinc {
-            // NC201.ABSINC: modal, in force from the block that writes it.
-            self.incremental = incremental;
-        }
         let axis = if nc201 {
             b.has(b'X') || b.has(b'Z')
         } else {
@@ -182,6 +168,24 @@ impl Machine {
                 Mode::Thread(code) => Kind::Thread(code),
             },
         };
+        // (2) conflicts: X/U, Z/W, and F/I in a thread block, where I is threads per inch (the
+        // two-motion-code and G90/G91 conflicts are found in `codes`). Under nc201 U and W are
+        // no incremental addresses and I is G162's pitch change, so none of these pairs exists
+        // there (NC201.ABSINC). Elsewhere I is another word or not allowed (COM.LEAD).
+        let thread = matches!(kind, Kind::G92 | Kind::First(_) | Kind::Second(_) | Kind::Thread(_));
+        for (first, second, rule, applies) in [
+            (b'X', b'U', Rule::ComAbsInc, true),
+            (b'Z', b'W', Rule::ComAbsInc, true),
+            (b'F', b'I', Rule::ComLead, thread),
+        ] {
+            if !nc201 && applies && b.has(first) && b.has(second) {
+                return Err(at(second).alarm(AlarmCode::Conflict, rule));
+            }
+        }
+        if let Some(incremental) = absinc {
+            // NC201.ABSINC: modal, in force from the block that writes it.
+            self.incremental = incremental;
+        }
         // (2) allowed words, alphabetically.
         let refused = b.mask() & !(allowed(kind, self.config.dialect) | COMMON);
         if refused != 0 {
