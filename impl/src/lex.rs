@@ -194,6 +194,9 @@ impl<'a> Blocks<'a> {
             self.pos += 1;
             decimals = self.digit_run(&mut n.mantissa, &mut significant);
             digits = digits.saturating_add(decimals);
+            if cfg!(feature = "planted-lexer-bug") {
+                n.point = planted_point(decimals);
+            }
         }
         if digits == 0 || significant > MAX_DIGITS || decimals > MAX_DIGITS {
             return Err(self.alarm(AlarmCode::BadNumber, Some(letter)));
@@ -286,6 +289,17 @@ impl<'a> Blocks<'a> {
             }
         }
     }
+}
+
+/// TEST AID, never for production, used only with the feature `planted-lexer-bug` (off by
+/// default): a number's point is recorded only when a digit follows it, so `X5.` reads as `X5`
+/// (PRJ.LEX keeps "whether a point was written"). Lengths keep their value; what the point
+/// decides goes wrong: `NOT INTEGER` (`P20545.`, `L2.`, `M3.`), F76.MICRONS (`P2.` is 2 mm, not
+/// 2 increments), a G with a decimal part (`G0.`). Ordinary programs write `X40.`; the manuals'
+/// thread examples in the corpus never put a point where it matters — the differential
+/// campaigns are what must find it.
+fn planted_point(decimals: u32) -> bool {
+    decimals > 0
 }
 
 impl Iterator for Blocks<'_> {
