@@ -35,6 +35,7 @@ mod modal;
 mod multipass;
 pub mod number;
 mod pullout;
+mod run;
 pub mod schedule;
 mod thread_move;
 mod words;
@@ -44,7 +45,8 @@ use lex::{Block, Blocks};
 
 /// N: the largest length of any word or parameter, increments (COM.RANGES).
 pub use words::MAX_LENGTH;
-use modal::{Action, Machine};
+use modal::Machine;
+use run::Run;
 
 /// Streaming expansion of a program: one trace event per call of `next`, the alarm last.
 pub struct Expander<'a> {
@@ -53,8 +55,8 @@ pub struct Expander<'a> {
     block: Block,
     machine: Machine,
     /// What the last block asked for while it is carried out: a running cycle, a move not yet
-    /// returned, or nothing. The block interpreter writes it in place.
-    action: Action,
+    /// returned, or nothing ([`Run`]). The block interpreter writes it in place.
+    run: Run,
     /// The configuration has been checked.
     checked: bool,
     /// M02/M30 was read: nothing after that block.
@@ -71,7 +73,7 @@ impl<'a> Expander<'a> {
             blocks: Blocks::new(program),
             block: Block::new(),
             machine: Machine::new(config),
-            action: Action::Nothing,
+            run: Run::Idle,
             checked: false,
             ended: false,
             done: false,
@@ -81,24 +83,25 @@ impl<'a> Expander<'a> {
 
     fn fail(&mut self, alarm: Alarm) -> Option<Result<Event, Alarm>> {
         self.done = true;
-        self.action = Action::Nothing;
+        self.run = Run::Idle;
         Some(Err(alarm))
     }
 
     /// Writes the next events of the stream into `out` and returns how many: the same events,
-    /// in the same order, as the iterator, for a caller that keeps them in a buffer. A running
-    /// G92/G76/G78 cycle writes whole starts at a time, each event built in place.
+    /// in the same order, as the iterator, for a caller that keeps them in a buffer. Whatever
+    /// runs writes into `out` directly ([`Run::fill`]): a G92/G76/G78 cycle whole starts at a
+    /// time, each event built in place.
     ///
     /// Fewer than `out.len()` events (0 included) means the stream ended, or an alarm follows:
     /// the alarm is returned by the next call as `Err`, after which the stream is over.
     pub fn fill(&mut self, out: &mut [Event]) -> Result<usize, Alarm> {
         let mut n = 0;
         while let Some(rest) = out.get_mut(n..).filter(|r| !r.is_empty()) {
-            if let Action::Cycle(c) = &mut self.action {
-                let (written, done) = c.fill(&mut self.machine.pos, rest);
+            if !matches!(self.run, Run::Idle) {
+                let (written, done) = self.run.fill(&mut self.machine.pos, rest);
                 n += written;
                 if done {
-                    self.action = Action::Nothing;
+                    self.run = Run::Idle;
                 }
                 continue;
             }
@@ -127,22 +130,23 @@ impl Iterator for Expander<'_> {
 
     /// The hot path — the next move of a running G92/G76/G78 cycle — is small enough to inline
     /// into the caller's loop, so the event is written straight to where the caller keeps it;
-    /// everything else is `Expander::next_slow`.
+    /// everything else is `Expander::next_slow`, which dispatches on [`Run`].
     #[inline]
     fn next(&mut self) -> Option<Self::Item> {
-        if let Action::Cycle(c) = &mut self.action {
+        if let Run::Multipass(c) = &mut self.run {
             if let Some(e) = c.next_event(&mut self.machine.pos) {
                 return Some(Ok(e));
             }
             // The cycle is done (a cycle is not fused: it must not be asked again).
-            self.action = Action::Nothing;
+            self.run = Run::Idle;
         }
         self.next_slow()
     }
 }
 
 impl Expander<'_> {
-    /// Every event but the hot path's: the configuration check, blocks, G162, the end.
+    /// Every event but the hot path's: the configuration check, blocks, the other families,
+    /// the end.
     #[inline(never)]
     fn next_slow(&mut self) -> Option<Result<Event, Alarm>> {
         if let Some(a) = self.pending.take() {
@@ -158,21 +162,10 @@ impl Expander<'_> {
             }
         }
         loop {
-            let pos = &mut self.machine.pos;
-            let event = match &mut self.action {
-                Action::Nothing => None,
-                Action::Cycle(c) => c.next_event(pos),
-                Action::G162(c) => c.next_event(pos),
-                Action::Move(m) => {
-                    let m = *m;
-                    self.action = Action::Nothing;
-                    emit::emit(m, pos)
-                }
-            };
-            if let Some(e) = event {
+            if let Some(e) = self.run.next_event(&mut self.machine.pos) {
                 return Some(Ok(e));
             }
-            self.action = Action::Nothing;
+            self.run = Run::Idle;
             match self.read_block() {
                 Ok(true) => {}
                 Ok(false) => return None,
@@ -181,13 +174,13 @@ impl Expander<'_> {
         }
     }
 
-    /// [`Expander::fill`] outside a running G92/G76/G78 cycle: between cycles the next block
-    /// is read without taking an event from it (`Ok(None)`), so that a cycle's first events are
-    /// written by the cycle too; otherwise as [`Expander::next_slow`].
+    /// [`Expander::fill`] with nothing running: the next block is read without taking an event
+    /// from it (`Ok(None)`), so that what it runs writes its own events; before the first block,
+    /// after the end or an alarm, as [`Expander::next_slow`].
     #[inline(never)]
     fn fill_slow(&mut self) -> Option<Result<Option<Event>, Alarm>> {
         let steady = self.checked && !self.done && self.pending.is_none();
-        if steady && matches!(self.action, Action::Nothing) {
+        if steady && matches!(self.run, Run::Idle) {
             return match self.read_block() {
                 Ok(true) => Some(Ok(None)),
                 Ok(false) => None,
@@ -197,7 +190,7 @@ impl Expander<'_> {
         self.next_slow().map(|r| r.map(Some))
     }
 
-    /// With nothing running: reads the next block into the action it asks for (possibly
+    /// With nothing running: reads the next block into what it runs (possibly
     /// nothing); `false` when the program is over (its end, or the block after M02/M30). An
     /// alarm is for the caller to [`fail`](Expander::fail) with.
     fn read_block(&mut self) -> Result<bool, Alarm> {
@@ -205,7 +198,7 @@ impl Expander<'_> {
             self.done = true;
             return Ok(false);
         }
-        self.ended = self.machine.block(&self.block, &mut self.action)?;
+        self.ended = self.machine.block(&self.block, &mut self.run)?;
         Ok(true)
     }
 }

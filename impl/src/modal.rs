@@ -1,11 +1,10 @@
 //! The modal interpreter (PRJ.MODAL, PRJ.WORD, PRJ.SUPPORTED, PRJ.DIALECT, COM.ABSINC,
-//! NC201.ABSINC, NC201.XMODE, COM.LEAD): one block in, at most one action out, with the check
+//! NC201.ABSINC, NC201.XMODE, COM.LEAD): one block in, at most one [`Run`] out, with the check
 //! order of docs/INTERPRETATION.md — (2) G and M codes, conflicts, allowed words alphabetically;
 //! (3) values alphabetically; (4) missing words; (5) the cycle's own checks.
 
 use crate::config::Params;
 use crate::fixed::sat;
-use crate::emit::Cycle;
 use crate::g162::{self, max_lead, SplitParams};
 use crate::g92::{self, G92State, PullMemo};
 use crate::multipass::{self, Code, FirstBlock, Second};
@@ -15,6 +14,7 @@ use crate::words::{
 };
 use crate::lex::{letter_bit, letter_mask, Block};
 use crate::number::Number;
+use crate::run::Run;
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Move, Rule, Units};
 
 /// The modal motion mode.
@@ -25,17 +25,6 @@ pub enum Mode {
     G92,
     /// G32, G33, G34 (PRJ.MODAL, M003).
     Thread(ThreadCode),
-}
-
-/// What a block asks of the expander.
-// No heap: the cycle state is moved once into the expander; boxing is not an option.
-#[allow(clippy::large_enum_variant)]
-#[derive(Clone, Copy, Debug)]
-pub enum Action {
-    Nothing,
-    Move(Move),
-    Cycle(Cycle),
-    G162(g162::Cycle),
 }
 
 /// How the block's words are read (its code, or the modal mode).
@@ -136,10 +125,10 @@ impl Machine {
         }
     }
 
-    /// Reads one block: writes what it asks of the expander into `action` (in place: a cycle
+    /// Reads one block: writes what it asks of the expander into `run` (in place: a cycle
     /// is not copied on its way out) and returns whether it ends the program (M02, M30).
-    pub fn block(&mut self, b: &Block, action: &mut Action) -> Result<bool, Alarm> {
-        *action = Action::Nothing;
+    pub fn block(&mut self, b: &Block, run: &mut Run) -> Result<bool, Alarm> {
+        *run = Run::Idle;
         let line = b.line;
         let at = |letter: u8| At { letter, line };
         let (motion, end, absinc) = self.codes(b)?;
@@ -202,18 +191,18 @@ impl Machine {
                 self.value(kind, l, n, at(l), &mut v)?;
             }
         }
-        // (4), (5) and the action.
+        // (4), (5) and what runs.
         match kind {
             Kind::Rapid | Kind::Feed => {
-                *action = self.linear(kind, motion.is_some(), &v, axis, line)?.map_or(Action::Nothing, Action::Move);
+                *run = self.linear(kind, motion.is_some(), &v, axis, line)?.map_or(Run::Idle, Run::Move);
             }
-            Kind::G92 => self.g92(motion.is_some(), &v, axis, line, action)?,
+            Kind::G92 => self.g92(motion.is_some(), &v, axis, line, run)?,
             Kind::First(code) => self.first(code, &v),
-            Kind::Second(code) => self.second(code, &v, line, action)?,
+            Kind::Second(code) => self.second(code, &v, line, run)?,
             Kind::Thread(code) => {
-                *action = self.thread(code, motion.is_some(), &v, axis, line)?.map_or(Action::Nothing, Action::Move);
+                *run = self.thread(code, motion.is_some(), &v, axis, line)?.map_or(Run::Idle, Run::Move);
             }
-            Kind::G162 => self.g162(&v, line, action)?,
+            Kind::G162 => self.g162(&v, line, run)?,
         }
         Ok(end)
     }
@@ -419,7 +408,7 @@ impl Machine {
     }
 
     /// G92.MODAL, G92.FORMAT: a block in G92 mode or with G92.
-    fn g92(&mut self, coded: bool, v: &Vals, axis: bool, line: u32, action: &mut Action) -> Result<(), Alarm> {
+    fn g92(&mut self, coded: bool, v: &Vals, axis: bool, line: u32, run: &mut Run) -> Result<(), Alarm> {
         if coded && self.mode != Mode::G92 {
             self.g92.new_run(self.pos);
         }
@@ -453,7 +442,7 @@ impl Machine {
         let st = *st;
         // A `match`, not `?`: `?` copies the cycle (~300 bytes) once more on its way out.
         match g92::cycle(&self.config, &self.params, &st, &mut self.g92_pull, self.pos, lead, line) {
-            Ok(c) => *action = Action::Cycle(c),
+            Ok(c) => *run = Run::Multipass(c),
             Err(a) => return Err(a),
         }
         Ok(())
@@ -498,7 +487,7 @@ impl Machine {
     }
 
     /// G76.FORMAT, G76.REQUIRED: a second block, (4) missing words — lead, P, Q — then the cycle.
-    fn second(&mut self, code: Code, v: &Vals, line: u32, action: &mut Action) -> Result<(), Alarm> {
+    fn second(&mut self, code: Code, v: &Vals, line: u32, run: &mut Run) -> Result<(), Alarm> {
         if let Some(f) = v.lead {
             self.feed = Some(f);
         }
@@ -520,7 +509,7 @@ impl Machine {
             Code::G78 => &self.g78,
         };
         match multipass::cycle(&self.config, &self.params, code, first, self.pos, &sec, line) {
-            Ok(c) => *action = Action::Cycle(c),
+            Ok(c) => *run = Run::Multipass(c),
             Err(a) => return Err(a),
         }
         Ok(())
@@ -586,7 +575,7 @@ impl Machine {
     /// G162.FORMAT: (4) missing words — F (G162.F), H (G162.H), P/Q as a pair (G162.PQ), X, Z
     /// (G162.FORMAT) — then the cycle's checks and the cycle. F sets the modal feed; without F
     /// the modal feed is the lead whatever it was set for (G162.F).
-    fn g162(&mut self, v: &Vals, line: u32, action: &mut Action) -> Result<(), Alarm> {
+    fn g162(&mut self, v: &Vals, line: u32, run: &mut Run) -> Result<(), Alarm> {
         if let Some(f) = v.lead {
             self.feed = Some(f);
         }
@@ -618,7 +607,7 @@ impl Machine {
             j: angle(v.j, 360_000),
         };
         match g162::cycle(&self.config, &self.params, &words, self.pos, line) {
-            Ok(c) => *action = Action::G162(c),
+            Ok(c) => *run = Run::G162(c),
             Err(a) => return Err(a),
         }
         Ok(())
