@@ -1,5 +1,5 @@
 //! Production expander of the lathe thread cycles G92, G76, G78, FANUC-style G76 and G162
-//! (`nc201`), and of the thread moves G32, G33, G34.
+//! (`nc201`), of the thread moves G32, G33, G34 and of the single cutting cycles G90, G94.
 //!
 //! `no_std`, no heap, no floating point, no `unsafe`, no panics: [`Expander`] is a streaming
 //! iterator over the trace events of a program (PRJ.TRACE), computed on the integer grid with
@@ -7,10 +7,13 @@
 //! caller's buffer, a whole start of a cycle at a time. The rules and every interpretation are those of
 //! `docs/RULES.md` and `docs/INTERPRETATION.md`; each rule-implementing function cites its ID.
 //!
-//! Modules: [`schedule`] (rough-pass depths), [`fixed`] (exact integer helpers and the tangent
-//! table), `words` (word values and ranges), `modal` (block interpreter and check order),
-//! `g92`, `multipass` (G76/G78), `pullout`, `emit` (the per-pass move state machine), [`g162`]
-//! (depth split, checks and its own move state machine), `thread_move` (G32/G33/G34), `config`.
+//! Modules: [`lex`] (the program lexer) and [`number`] (numbers as written, scaled exactly),
+//! [`schedule`] (rough-pass depths), [`fixed`] (exact integer helpers and the tangent table),
+//! `words` (word values and ranges), `modal` (block interpreter and check order), `run` (the
+//! enum of everything that runs, dispatched by [`Expander`]), `g92`, `multipass` (G76/G78),
+//! `pullout`, `emit` (the per-pass move state machine of G92/G76/G78), [`g162`] (depth split,
+//! checks and its own move state machine), `thread_move` (G32/G33/G34), `g90` (G90/G94),
+//! `config`.
 #![no_std]
 #![forbid(unsafe_code)]
 #![cfg_attr(
@@ -29,6 +32,7 @@ pub mod config;
 mod emit;
 pub mod fixed;
 pub mod g162;
+mod g90;
 mod g92;
 pub mod lex;
 mod modal;
@@ -211,3 +215,6 @@ mod g162_tests;
 
 #[cfg(test)]
 mod front_tests;
+
+#[cfg(test)]
+mod g90_tests;

@@ -6,6 +6,7 @@
 use crate::config::Params;
 use crate::fixed::sat;
 use crate::g162::{self, max_lead, SplitParams};
+use crate::g90::{self, CutCode, CutState};
 use crate::g92::{self, G92State, PullMemo};
 use crate::multipass::{self, Code, FirstBlock, Second};
 use crate::thread_move::{thread_move, ThreadCode, ThreadWords, MAX_START_ANGLE};
@@ -25,6 +26,8 @@ pub enum Mode {
     G92,
     /// G32, G33, G34 (PRJ.MODAL, M003).
     Thread(ThreadCode),
+    /// G90, G94 (G90.MODAL, G94.MODAL).
+    Cut(CutCode),
 }
 
 /// How the block's words are read (its code, or the modal mode).
@@ -37,6 +40,7 @@ enum Kind {
     Second(Code),
     Thread(ThreadCode),
     G162,
+    Cut(CutCode),
 }
 
 /// The machine state carried from block to block.
@@ -51,6 +55,8 @@ pub struct Machine {
     /// Modal feed / lead, lead counts (COM.LEAD).
     feed: Option<i64>,
     g92: G92State,
+    /// The G90/G94 run.
+    cut: CutState,
     /// The last G92 cycle's pull-out, reused while its inputs stay the same.
     g92_pull: PullMemo,
     g76: FirstBlock,
@@ -82,6 +88,8 @@ struct Vals {
     h: Option<i64>,
     pitch_change: Option<i64>,
     v: Option<i64>,
+    /// G90 I (radius) or G94 K: the taper.
+    taper: Option<i64>,
 }
 
 /// Words every block accepts (no motion effect).
@@ -97,6 +105,8 @@ fn allowed(kind: Kind, dialect: Dialect) -> u32 {
         (Kind::Thread(ThreadCode::G33), _) => const { letter_mask(b"FIPUWXZ") },
         (Kind::Thread(ThreadCode::G34), _) => const { letter_mask(b"FIKUWXZ") },
         (Kind::G162, _) => const { letter_mask(b"ABFHIJPQVWXZ") },
+        (Kind::Cut(CutCode::G90), _) => const { letter_mask(b"FIUWXZ") },
+        (Kind::Cut(CutCode::G94), _) => const { letter_mask(b"FKUWXZ") },
         (Kind::G92, _) => const { letter_mask(b"FIJKLRUWXZ") },
         (Kind::First(_), Dialect::Fanuc) => const { letter_mask(b"PQR") },
         (Kind::First(_), Dialect::Gsk | Dialect::Nc201) => const { letter_mask(b"DELPQR") },
@@ -118,6 +128,7 @@ impl Machine {
             mode: Mode::Rapid,
             feed: None,
             g92: G92State::new(),
+            cut: CutState::new(),
             g92_pull: PullMemo::default(),
             g76: FirstBlock::defaults(&params, Code::G76),
             g78: FirstBlock::defaults(&params, Code::G78),
@@ -148,6 +159,8 @@ impl Machine {
             Some(33) => Kind::Thread(ThreadCode::G33),
             Some(34) => Kind::Thread(ThreadCode::G34),
             Some(162) => Kind::G162,
+            Some(90) => Kind::Cut(CutCode::G90),
+            Some(94) => Kind::Cut(CutCode::G94),
             Some(1) => Kind::Feed,
             Some(_) => Kind::Rapid,
             None => match self.mode {
@@ -155,6 +168,7 @@ impl Machine {
                 Mode::Feed => Kind::Feed,
                 Mode::G92 => Kind::G92,
                 Mode::Thread(code) => Kind::Thread(code),
+                Mode::Cut(code) => Kind::Cut(code),
             },
         };
         // (2) conflicts: X/U, Z/W, and F/I in a thread block, where I is threads per inch (the
@@ -203,6 +217,7 @@ impl Machine {
                 *run = self.thread(code, motion.is_some(), &v, axis, line)?.map_or(Run::Idle, Run::Move);
             }
             Kind::G162 => self.g162(&v, line, run)?,
+            Kind::Cut(code) => self.cut(code, motion.is_some(), &v, axis, line, run)?,
         }
         Ok(end)
     }
@@ -227,10 +242,11 @@ impl Machine {
                 0 | 1 => {}
                 // M003 / M001 / M002 codes are not defined for the M004 controller, and G162 only
                 // for it (PRJ.DIALECT).
-                92 | 76 | 32 | 33 | 34 if !nc201 => {}
+                92 | 76 | 32 | 33 | 34 | 90 | 94 if !nc201 => {}
                 78 if dialect == Dialect::Gsk => {}
                 162 if nc201 => {}
-                32 | 33 | 34 | 76 | 78 | 92 | 162 => {
+                // Under nc201 G90 is the absolute mode (below) and G94 is not defined.
+                32 | 33 | 34 | 76 | 78 | 92 | 94 | 162 => {
                     return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjDialect))
                 }
                 90 | 91 if nc201 => {
@@ -285,6 +301,10 @@ impl Machine {
             (_, b'F') => v.lead = Some(lead_f(n, grid, at)?),
             // NC201.XMODE: X of G00/G01 by `x_radius`.
             (_, b'X') if self.config.dialect == Dialect::Nc201 => v.x = Some(self.x_word(n, at)?),
+            // G90.FORMAT, G94.FORMAT: the taper, a signed length (I is no lead here).
+            (Kind::Cut(CutCode::G90), b'I') | (Kind::Cut(CutCode::G94), b'K') => {
+                v.taper = Some(signed_length(n, grid, at)?);
+            }
             (_, b'I') => v.lead = Some(lead_i(n, grid, at)?),
             (_, b'U') => v.u = Some(signed_length(n, grid, at)?),
             (_, b'W') => v.w = Some(signed_length(n, grid, at)?),
@@ -570,6 +590,33 @@ impl Machine {
         let to = Self::end_point(v, self.pos, self.pos);
         let words = ThreadWords { lead, p, k };
         thread_move(code, self.pos, to, &words, self.config.grid, line).map(Some)
+    }
+
+    /// G90.MODAL, G94.MODAL, G90.FORMAT, G94.FORMAT: a block in the mode or with the code. A
+    /// new run (the code after another motion mode) starts with taper 0 and the end at the
+    /// current position; omitted end coordinates and taper are the run's; without axis words
+    /// the block only sets the taper and the feed. (4) the lead (COM.LEAD), then the cycle.
+    fn cut(&mut self, code: CutCode, coded: bool, v: &Vals, axis: bool, line: u32, run: &mut Run) -> Result<(), Alarm> {
+        if coded && self.mode != Mode::Cut(code) {
+            self.cut.new_run(self.pos);
+        }
+        self.mode = Mode::Cut(code);
+        if let Some(f) = v.lead {
+            self.feed = Some(f);
+        }
+        if let Some(t) = v.taper {
+            self.cut.taper = t;
+        }
+        if !axis {
+            return Ok(());
+        }
+        self.cut.end = Self::end_point(v, self.pos, self.cut.end);
+        let Some(feed) = self.feed else {
+            return Err(Alarm::new(AlarmCode::MissingWord, Some(b'F'), Rule::ComLead, line));
+        };
+        self.cut.index = self.cut.index.saturating_add(1);
+        *run = Run::Cut(g90::cycle(code, &self.cut, self.pos, feed, line)?);
+        Ok(())
     }
 
     /// G162.FORMAT: (4) missing words — F (G162.F), H (G162.H), P/Q as a pair (G162.PQ), X, Z

@@ -4,6 +4,7 @@
 
 use crate::emit::{self, emit};
 use crate::g162;
+use crate::g90;
 use cycle_vocab::{Event, Move};
 
 /// What a block asks of the expander while it is carried out.
@@ -19,6 +20,8 @@ pub enum Run {
     Multipass(emit::Cycle),
     /// A G162 cycle (G162.PATH).
     G162(g162::Cycle),
+    /// A G90 or G94 cycle (G90.PATH, G94.PATH).
+    Cut(g90::Cycle),
 }
 
 impl Run {
@@ -35,6 +38,7 @@ impl Run {
             }
             Run::Multipass(c) => c.next_event(pos),
             Run::G162(c) => c.next_event(pos),
+            Run::Cut(c) => c.next_event(pos),
         }
     }
 
@@ -46,6 +50,7 @@ impl Run {
             Run::Idle => (0, true),
             Run::Multipass(c) => c.fill(pos, out),
             Run::G162(c) => fill_each(out, || c.next_event(pos)),
+            Run::Cut(c) => fill_each(out, || c.next_event(pos)),
             Run::Move(m) => {
                 let m = *m;
                 let Some(slot) = out.first_mut() else {
