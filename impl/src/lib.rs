@@ -93,7 +93,7 @@ impl<'a> Expander<'a> {
 
     /// Writes the next events of the stream into `out` and returns how many: the same events,
     /// in the same order, as the iterator, for a caller that keeps them in a buffer. Whatever
-    /// runs writes into `out` directly ([`Run::fill`]): a G92/G76/G78 cycle whole starts at a
+    /// runs writes into `out` directly (`Run::fill`): a G92/G76/G78 cycle whole starts at a
     /// time, each event built in place.
     ///
     /// Fewer than `out.len()` events (0 included) means the stream ended, or an alarm follows:
@@ -134,7 +134,7 @@ impl Iterator for Expander<'_> {
 
     /// The hot path — the next move of a running G92/G76/G78 cycle — is small enough to inline
     /// into the caller's loop, so the event is written straight to where the caller keeps it;
-    /// everything else is `Expander::next_slow`, which dispatches on [`Run`].
+    /// everything else is `Expander::next_slow`, which dispatches on `Run`.
     #[inline]
     fn next(&mut self) -> Option<Self::Item> {
         if let Run::Multipass(c) = &mut self.run {
