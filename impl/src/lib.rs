@@ -101,8 +101,14 @@ impl<'a> Expander<'a> {
     pub fn fill(&mut self, out: &mut [Event]) -> Result<usize, Alarm> {
         let mut n = 0;
         while let Some(rest) = out.get_mut(n..).filter(|r| !r.is_empty()) {
-            if !matches!(self.run, Run::Idle) {
-                let (written, done) = self.run.fill(&mut self.machine.pos, rest);
+            let pos = &mut self.machine.pos;
+            let (written, done) = match &mut self.run {
+                // The hot path, inlined here: a G92/G76/G78 cycle writes whole starts.
+                Run::Multipass(c) => c.fill(pos, rest),
+                Run::Idle => (0, false),
+                other => other.fill(pos, rest),
+            };
+            if written != 0 || done {
                 n += written;
                 if done {
                     self.run = Run::Idle;

@@ -43,8 +43,10 @@ impl Run {
     }
 
     /// Writes the next events into `out`, the same events as [`Run::next_event`]; returns how
-    /// many and whether the family is done (then the caller makes it [`Run::Idle`]).
-    #[inline]
+    /// many and whether the family is done (then the caller makes it [`Run::Idle`]). `out` is
+    /// not empty. Kept out of line: [`crate::Expander::fill`] inlines the G92/G76/G78 arm, the
+    /// hot path, itself.
+    #[inline(never)]
     pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> (usize, bool) {
         match self {
             Run::Idle => (0, true),
