@@ -1,5 +1,5 @@
 //! Production expander of the lathe thread cycles G92, G76, G78, FANUC-style G76 and G162
-//! (`nc201`), and of the thread moves G32, G33, G34.
+//! (`nc201`), of the thread moves G32, G33, G34 and of the single cutting cycles G90, G94.
 //!
 //! `no_std`, no heap, no floating point, no `unsafe`, no panics: [`Expander`] is a streaming
 //! iterator over the trace events of a program (PRJ.TRACE), computed on the integer grid with
@@ -7,10 +7,13 @@
 //! caller's buffer, a whole start of a cycle at a time. The rules and every interpretation are those of
 //! `docs/RULES.md` and `docs/INTERPRETATION.md`; each rule-implementing function cites its ID.
 //!
-//! Modules: [`schedule`] (rough-pass depths), [`fixed`] (exact integer helpers and the tangent
-//! table), `words` (word values and ranges), `modal` (block interpreter and check order),
-//! `g92`, `multipass` (G76/G78), `pullout`, `emit` (the per-pass move state machine), [`g162`]
-//! (depth split, checks and its own move state machine), `thread_move` (G32/G33/G34), `config`.
+//! Modules: [`lex`] (the program lexer) and [`number`] (numbers as written, scaled exactly),
+//! [`schedule`] (rough-pass depths), [`fixed`] (exact integer helpers and the tangent table),
+//! `words` (word values and ranges), `modal` (block interpreter and check order), `run` (the
+//! enum of everything that runs, dispatched by [`Expander`]), `g92`, `multipass` (G76/G78),
+//! `pullout`, `emit` (the per-pass move state machine of G92/G76/G78), [`g162`] (depth split,
+//! checks and its own move state machine), `thread_move` (G32/G33/G34), `g90` (G90/G94),
+//! `config`.
 #![no_std]
 #![forbid(unsafe_code)]
 #![cfg_attr(
@@ -29,19 +32,25 @@ pub mod config;
 mod emit;
 pub mod fixed;
 pub mod g162;
+mod g90;
 mod g92;
+pub mod lex;
 mod modal;
 mod multipass;
+pub mod number;
 mod pullout;
+mod run;
 pub mod schedule;
 mod thread_move;
 mod words;
 
-use cycle_vocab::{Alarm, Block, Blocks, Config, Event};
+use cycle_vocab::{Alarm, Config, Event};
+use lex::{Block, Blocks};
 
 /// N: the largest length of any word or parameter, increments (COM.RANGES).
 pub use words::MAX_LENGTH;
-use modal::{Action, Machine};
+use modal::Machine;
+use run::Run;
 
 /// Streaming expansion of a program: one trace event per call of `next`, the alarm last.
 pub struct Expander<'a> {
@@ -50,8 +59,8 @@ pub struct Expander<'a> {
     block: Block,
     machine: Machine,
     /// What the last block asked for while it is carried out: a running cycle, a move not yet
-    /// returned, or nothing. The block interpreter writes it in place.
-    action: Action,
+    /// returned, or nothing ([`Run`]). The block interpreter writes it in place.
+    run: Run,
     /// The configuration has been checked.
     checked: bool,
     /// M02/M30 was read: nothing after that block.
@@ -68,7 +77,7 @@ impl<'a> Expander<'a> {
             blocks: Blocks::new(program),
             block: Block::new(),
             machine: Machine::new(config),
-            action: Action::Nothing,
+            run: Run::Idle,
             checked: false,
             ended: false,
             done: false,
@@ -78,24 +87,31 @@ impl<'a> Expander<'a> {
 
     fn fail(&mut self, alarm: Alarm) -> Option<Result<Event, Alarm>> {
         self.done = true;
-        self.action = Action::Nothing;
+        self.run = Run::Idle;
         Some(Err(alarm))
     }
 
     /// Writes the next events of the stream into `out` and returns how many: the same events,
-    /// in the same order, as the iterator, for a caller that keeps them in a buffer. A running
-    /// G92/G76/G78 cycle writes whole starts at a time, each event built in place.
+    /// in the same order, as the iterator, for a caller that keeps them in a buffer. Whatever
+    /// runs writes into `out` directly (`Run::fill`): a G92/G76/G78 cycle whole starts at a
+    /// time, each event built in place.
     ///
     /// Fewer than `out.len()` events (0 included) means the stream ended, or an alarm follows:
     /// the alarm is returned by the next call as `Err`, after which the stream is over.
     pub fn fill(&mut self, out: &mut [Event]) -> Result<usize, Alarm> {
         let mut n = 0;
         while let Some(rest) = out.get_mut(n..).filter(|r| !r.is_empty()) {
-            if let Action::Cycle(c) = &mut self.action {
-                let (written, done) = c.fill(&mut self.machine.pos, rest);
+            let pos = &mut self.machine.pos;
+            let (written, done) = match &mut self.run {
+                // The hot path, inlined here: a G92/G76/G78 cycle writes whole starts.
+                Run::Multipass(c) => c.fill(pos, rest),
+                Run::Idle => (0, false),
+                other => other.fill(pos, rest),
+            };
+            if written != 0 || done {
                 n += written;
                 if done {
-                    self.action = Action::Nothing;
+                    self.run = Run::Idle;
                 }
                 continue;
             }
@@ -124,22 +140,23 @@ impl Iterator for Expander<'_> {
 
     /// The hot path — the next move of a running G92/G76/G78 cycle — is small enough to inline
     /// into the caller's loop, so the event is written straight to where the caller keeps it;
-    /// everything else is `Expander::next_slow`.
+    /// everything else is `Expander::next_slow`, which dispatches on `Run`.
     #[inline]
     fn next(&mut self) -> Option<Self::Item> {
-        if let Action::Cycle(c) = &mut self.action {
+        if let Run::Multipass(c) = &mut self.run {
             if let Some(e) = c.next_event(&mut self.machine.pos) {
                 return Some(Ok(e));
             }
             // The cycle is done (a cycle is not fused: it must not be asked again).
-            self.action = Action::Nothing;
+            self.run = Run::Idle;
         }
         self.next_slow()
     }
 }
 
 impl Expander<'_> {
-    /// Every event but the hot path's: the configuration check, blocks, G162, the end.
+    /// Every event but the hot path's: the configuration check, blocks, the other families,
+    /// the end.
     #[inline(never)]
     fn next_slow(&mut self) -> Option<Result<Event, Alarm>> {
         if let Some(a) = self.pending.take() {
@@ -155,21 +172,10 @@ impl Expander<'_> {
             }
         }
         loop {
-            let pos = &mut self.machine.pos;
-            let event = match &mut self.action {
-                Action::Nothing => None,
-                Action::Cycle(c) => c.next_event(pos),
-                Action::G162(c) => c.next_event(pos),
-                Action::Move(m) => {
-                    let m = *m;
-                    self.action = Action::Nothing;
-                    emit::emit(m, pos)
-                }
-            };
-            if let Some(e) = event {
+            if let Some(e) = self.run.next_event(&mut self.machine.pos) {
                 return Some(Ok(e));
             }
-            self.action = Action::Nothing;
+            self.run = Run::Idle;
             match self.read_block() {
                 Ok(true) => {}
                 Ok(false) => return None,
@@ -178,13 +184,13 @@ impl Expander<'_> {
         }
     }
 
-    /// [`Expander::fill`] outside a running G92/G76/G78 cycle: between cycles the next block
-    /// is read without taking an event from it (`Ok(None)`), so that a cycle's first events are
-    /// written by the cycle too; otherwise as [`Expander::next_slow`].
+    /// [`Expander::fill`] with nothing running: the next block is read without taking an event
+    /// from it (`Ok(None)`), so that what it runs writes its own events; before the first block,
+    /// after the end or an alarm, as [`Expander::next_slow`].
     #[inline(never)]
     fn fill_slow(&mut self) -> Option<Result<Option<Event>, Alarm>> {
         let steady = self.checked && !self.done && self.pending.is_none();
-        if steady && matches!(self.action, Action::Nothing) {
+        if steady && matches!(self.run, Run::Idle) {
             return match self.read_block() {
                 Ok(true) => Some(Ok(None)),
                 Ok(false) => None,
@@ -194,7 +200,7 @@ impl Expander<'_> {
         self.next_slow().map(|r| r.map(Some))
     }
 
-    /// With nothing running: reads the next block into the action it asks for (possibly
+    /// With nothing running: reads the next block into what it runs (possibly
     /// nothing); `false` when the program is over (its end, or the block after M02/M30). An
     /// alarm is for the caller to [`fail`](Expander::fail) with.
     fn read_block(&mut self) -> Result<bool, Alarm> {
@@ -202,7 +208,7 @@ impl Expander<'_> {
             self.done = true;
             return Ok(false);
         }
-        self.ended = self.machine.block(&self.block, &mut self.action)?;
+        self.ended = self.machine.block(&self.block, &mut self.run)?;
         Ok(true)
     }
 }
@@ -212,3 +218,9 @@ mod tests;
 
 #[cfg(test)]
 mod g162_tests;
+
+#[cfg(test)]
+mod front_tests;
+
+#[cfg(test)]
+mod g90_tests;

@@ -537,11 +537,11 @@ fn no_panic_on_random_input() {
         let mut params = Params::default();
         if round % 3 == 0 {
             let r = xorshift(&mut s);
-            params.no19_pullout = Some(((r % 300)) as i64);
+            params.no19_pullout = Some((r % 300) as i64);
             params.p5130_chamfer = Some(((r >> 9) as u32 % 120) as i64);
             params.p5131_chamfer_angle = Some(((r >> 17) as u32 % 95) as i64);
-            params.p5140_min_cut = Some((extremes[(r >> 24) as usize % extremes.len()]) as i64);
-            params.p5141_finish_allowance = Some((extremes[(r >> 28) as usize % extremes.len()]) as i64);
+            params.p5140_min_cut = Some(extremes[(r >> 24) as usize % extremes.len()]);
+            params.p5141_finish_allowance = Some(extremes[(r >> 28) as usize % extremes.len()]);
             params.p5142_finish_passes = Some(((r >> 32) as u32 % 120) as i64);
             params.p5143_tool_angle = Some(((r >> 40) as u32 % 110) as i64);
             params.max_passes = Some(([0, 1, 50, 10_000, u32::MAX][(r >> 48) as usize % 5]) as i64);

@@ -2,8 +2,8 @@
 //! range (COM.UNITS, COM.RANGES, COM.LEAD, PRJ.DIALECT / F76.MICRONS). Each function names the
 //! alarm of docs/INTERPRETATION.md, "Which alarm, exactly".
 
-use cycle_vocab::units::NumberError;
-use cycle_vocab::{Alarm, AlarmCode, Grid, Number, Rule, Units};
+use crate::number::{Number, NumberError};
+use cycle_vocab::{Alarm, AlarmCode, Grid, Rule, Units};
 
 /// N: the largest length of any word or parameter, increments (COM.RANGES).
 pub const MAX_LENGTH: i64 = 999_999_999;
@@ -28,10 +28,13 @@ impl At {
     }
 }
 
-fn scale_error(e: NumberError, at: At) -> Alarm {
+/// The alarm of a number that does not scale: `PRECISION` (COM.UNITS), `NOT INTEGER`
+/// (COM.RANGES), or — a value beyond any machine word — `OUT OF RANGE` under `range`, the rule
+/// that owns the word's range, as for any other value outside it (PRJ.LEX, "Values").
+fn scale_error(e: NumberError, at: At, range: Rule) -> Alarm {
     match e {
         NumberError::Precision => at.alarm(AlarmCode::Precision, Rule::ComUnits),
-        NumberError::Overflow => at.out_of_range(),
+        NumberError::Overflow => at.alarm(AlarmCode::OutOfRange, range),
         NumberError::NotInteger => at.alarm(AlarmCode::NotInteger, Rule::ComRanges),
     }
 }
@@ -40,7 +43,7 @@ fn scale_error(e: NumberError, at: At) -> Alarm {
 /// without a decimal point) reads a number without a point as a count of increments.
 pub fn length(n: Number, grid: Grid, increments: bool, at: At) -> Result<i64, Alarm> {
     let places = if increments && !n.point { 0 } else { grid.decimals() };
-    n.scaled(places).map_err(|e| scale_error(e, at))
+    n.scaled(places).map_err(|e| scale_error(e, at, Rule::ComRanges))
 }
 
 /// COM.RANGES: a length with `lo ≤ v ≤ hi`.
@@ -58,19 +61,20 @@ pub fn signed_length(n: Number, grid: Grid, at: At) -> Result<i64, Alarm> {
 }
 
 /// COM.RANGES: an integer word (P of the first block, L, D) written without a decimal point
-/// (`NOT INTEGER`, rule COM.RANGES) within `lo ≤ v ≤ hi` (`OUT OF RANGE` with `rule`).
+/// (`NOT INTEGER`, rule COM.RANGES) within `lo ≤ v ≤ hi` (`OUT OF RANGE` with `rule`, however
+/// large the value).
 pub fn integer_in(n: Number, lo: i64, hi: i64, rule: Rule, at: At) -> Result<i64, Alarm> {
-    let v = n.integer().map_err(|e| scale_error(e, at))?;
+    let v = n.integer().map_err(|e| scale_error(e, at, rule))?;
     if v < lo || v > hi {
         return Err(at.alarm(AlarmCode::OutOfRange, rule));
     }
     Ok(v)
 }
 
-/// A number on the grid of `places` decimals (generic errors as [`length`]) within
-/// `lo ≤ v ≤ hi`, else `OUT OF RANGE` with `rule` (G162 B, H, J).
+/// A number on the grid of `places` decimals (`PRECISION` as [`length`]) within
+/// `lo ≤ v ≤ hi`, else `OUT OF RANGE` with `rule`, beyond 64 bits too (G162 B, H, J).
 pub fn scaled_in(n: Number, places: u32, lo: i64, hi: i64, rule: Rule, at: At) -> Result<i64, Alarm> {
-    let v = n.scaled(places).map_err(|e| scale_error(e, at))?;
+    let v = n.scaled(places).map_err(|e| scale_error(e, at, rule))?;
     if v < lo || v > hi {
         return Err(at.alarm(AlarmCode::OutOfRange, rule));
     }
@@ -87,7 +91,7 @@ pub fn signed_lead(n: Number, grid: Grid, max: i64, rule: Rule, at: At) -> Resul
 /// COM.UNITS), then a multiple of 0.5° (else `PRECISION`, G162.A), then |A| ≤ 89°
 /// (else `OUT OF RANGE`, G162.A).
 pub fn infeed_angle(n: Number, at: At) -> Result<i64, Alarm> {
-    let tenths = n.scaled(1).map_err(|e| scale_error(e, at))?;
+    let tenths = n.scaled(1).map_err(|e| scale_error(e, at, Rule::G162A))?;
     if tenths % 5 != 0 {
         return Err(at.alarm(AlarmCode::Precision, Rule::G162A));
     }
@@ -100,7 +104,7 @@ pub fn infeed_angle(n: Number, at: At) -> Result<i64, Alarm> {
 /// COM.LEAD: F as lead counts (0.0001 mm / 0.00001 in), 1 … 99 990 000 (metric) or
 /// 1 … 999 000 (inch).
 pub fn lead_f(n: Number, grid: Grid, at: At) -> Result<i64, Alarm> {
-    let v = n.scaled(grid.lead_decimals()).map_err(|e| scale_error(e, at))?;
+    let v = n.scaled(grid.lead_decimals()).map_err(|e| scale_error(e, at, Rule::ComRanges))?;
     let max = match grid.units {
         Units::Metric => 99_990_000,
         Units::Inch => 999_000,
@@ -114,7 +118,7 @@ pub fn lead_f(n: Number, grid: Grid, at: At) -> Result<i64, Alarm> {
 /// COM.LEAD: I (threads per inch, at most 4 decimals, 0.0001 … 254 metric / 0.0001 … 100 inch)
 /// as a lead, rounded once half up to the lead grid: 25.4/I mm or 1/I in.
 pub fn lead_i(n: Number, grid: Grid, at: At) -> Result<i64, Alarm> {
-    let tpi = n.scaled(4).map_err(|e| scale_error(e, at))?; // threads per 10 000 inches
+    let tpi = n.scaled(4).map_err(|e| scale_error(e, at, Rule::ComRanges))?; // threads per 10 000 inches
     let (max, inch_in_counts) = match grid.units {
         // 25.4 mm = 254 000 counts of 0.0001 mm; ×10^4 for I in 0.0001 threads per inch.
         Units::Metric => (2_540_000, 2_540_000_000u128),

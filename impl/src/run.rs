@@ -1,0 +1,89 @@
+//! The running part of a block (PRJ.TRACE): one enum over every family the expander carries
+//! out, each a small state machine that yields one event per call (`next_event`) or writes its
+//! next events straight into the caller's buffer (`fill`). [`crate::Expander`] dispatches on it.
+
+use crate::emit::{self, emit};
+use crate::g162;
+use crate::g90;
+use cycle_vocab::{Event, Move};
+
+/// What a block asks of the expander while it is carried out.
+// No heap: the running state is moved once into the expander; boxing is not an option.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Copy, Debug)]
+pub enum Run {
+    /// Nothing running: the next block is read.
+    Idle,
+    /// One move not yet emitted: G00/G01 (PRJ.MODAL) or a thread move G32/G33/G34.
+    Move(Move),
+    /// A G92, G76 or G78 cycle (G92.PATH, G76.PATH): whole starts at a time.
+    Multipass(emit::Cycle),
+    /// A G162 cycle (G162.PATH).
+    G162(g162::Cycle),
+    /// A G90 or G94 cycle (G90.PATH, G94.PATH).
+    Cut(g90::Cycle),
+}
+
+impl Run {
+    /// The next event, updating the machine position `pos`; `None` when the family is done
+    /// (it must then not be asked again: the caller makes it [`Run::Idle`]). Bounded work: each
+    /// family's own bound.
+    pub fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
+        match self {
+            Run::Idle => None,
+            Run::Move(m) => {
+                let m = *m;
+                *self = Run::Idle;
+                emit(m, pos)
+            }
+            Run::Multipass(c) => c.next_event(pos),
+            Run::G162(c) => c.next_event(pos),
+            Run::Cut(c) => c.next_event(pos),
+        }
+    }
+
+    /// Writes the next events into `out`, the same events as [`Run::next_event`]; returns how
+    /// many and whether the family is done (then the caller makes it [`Run::Idle`]). `out` is
+    /// not empty. Kept out of line: [`crate::Expander::fill`] inlines the G92/G76/G78 arm, the
+    /// hot path, itself.
+    #[inline(never)]
+    pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> (usize, bool) {
+        match self {
+            Run::Idle => (0, true),
+            Run::Multipass(c) => c.fill(pos, out),
+            Run::G162(c) => fill_each(out, || c.next_event(pos)),
+            Run::Cut(c) => fill_each(out, || c.next_event(pos)),
+            Run::Move(m) => {
+                let m = *m;
+                let Some(slot) = out.first_mut() else {
+                    return (0, false);
+                };
+                *self = Run::Idle;
+                match emit(m, pos) {
+                    Some(e) => {
+                        *slot = e;
+                        (1, true)
+                    }
+                    None => (0, true),
+                }
+            }
+        }
+    }
+}
+
+/// Writes the events of `next` into `out` one at a time until it ends or `out` is full;
+/// returns how many were written and whether it ended.
+#[inline]
+fn fill_each(out: &mut [Event], mut next: impl FnMut() -> Option<Event>) -> (usize, bool) {
+    let mut n = 0;
+    for slot in out.iter_mut() {
+        match next() {
+            Some(e) => {
+                *slot = e;
+                n += 1;
+            }
+            None => return (n, true),
+        }
+    }
+    (n, false)
+}
