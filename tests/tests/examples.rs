@@ -78,12 +78,18 @@ snapshot!(g78_constant, "../programs/g78_constant.nc", gsk());
 // G162 (M004, nc201): the manual's cone, a straight, a taper, a multi-start, a variable-pitch
 // and an internal G91 thread; the thread moves G32/G33/G34 (M003).
 snapshot!(g162_cone, "../../corpus/g162_cone.nc", nc201());
+snapshot!(g90_example, "../../corpus/g90_example.nc", gsk());
+snapshot!(g94_example, "../../corpus/g94_example.nc", gsk());
 snapshot!(g162_straight, "../programs/g162_straight.nc", nc201());
 snapshot!(g162_taper, "../programs/g162_taper.nc", nc201());
 snapshot!(g162_multistart, "../programs/g162_multistart.nc", nc201());
 snapshot!(g162_variable, "../programs/g162_variable.nc", nc201());
 snapshot!(g162_internal_g91, "../programs/g162_internal_g91.nc", nc201());
 snapshot!(g32_g33_g34, "../programs/g32_g33_g34.nc", gsk());
+snapshot!(g90_taper_signs, "../programs/g90_taper_signs.nc", gsk());
+snapshot!(g90_modal_runs, "../programs/g90_modal_runs.nc", gsk());
+snapshot!(g90_inch, "../programs/g90_inch.nc", inch());
+snapshot!(g94_taper, "../programs/g94_taper.nc", gsk());
 
 /// Thread cuts (the first synchronized move after each pass header): (X, Z) of its end.
 fn cuts(trace: &Trace) -> Vec<(PassKind, i64, i64)> {
