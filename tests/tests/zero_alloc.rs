@@ -84,30 +84,24 @@ fn counting_allocator_sees_allocations() {
 #[test]
 fn expanding_any_cycle_allocates_nothing() {
     let metric = Config::default();
-    let inch = Config { grid: Grid { units: Units::Inch, increment: Increment::Isc }, ..Config::default() };
     let nc201 = Config { dialect: Dialect::Nc201, ..Config::default() };
-    let programs: &[(&str, Config)] = &[
-        (include_str!("../../corpus/g92_example.nc"), metric),
-        (include_str!("../../corpus/g76_example.nc"), metric),
-        (include_str!("../../corpus/g78_example.nc"), metric), // ends in an alarm
-        (include_str!("../../corpus/f76_ex1.nc"), metric),
-        (include_str!("../../corpus/f76_ex2.nc"), metric),
-        (include_str!("../programs/g76_multistart.nc"), metric),
-        (include_str!("../programs/g76_taper.nc"), metric),
-        (include_str!("../programs/g78_mode4.nc"), metric),
-        (include_str!("../programs/g92_inch.nc"), inch),
+    let inch_isc = Config { grid: Grid { units: Units::Inch, increment: Increment::Isc }, ..Config::default() };
+    // Every built-in program (every family: the manuals' examples and the feature programs),
+    // then near-bound cycles and alarms.
+    let mut programs: Vec<(&str, Config)> =
+        cycle_oracle::corpus::PROGRAMS.iter().map(|p| (p.text, p.config())).collect();
+    programs.extend([
+        (include_str!("../programs/g92_inch.nc"), inch_isc),
         ("G0 X40 Z5\nG76 P011060 Q0 R0.1\nG76 X27.4 Z-20 P1.09 Q0.01 F2\n", metric), // 9 801 rough passes
         ("G0 X40 Z5\nG76 X30 Z-20 F2\n", metric),                                 // alarm: missing P
         ("\u{1}\u{2}garbage(", metric),
-        (include_str!("../programs/g162_variable.nc"), nc201),
-        (include_str!("../programs/g162_internal_g91.nc"), nc201),
         ("G0 X30 Z5\nG162 X24 Z-20 H500 P10.001 Q0.001 V1 A29.5 F1.5 B90 I-0.1 J180\n", nc201), // 10 001 passes: alarm
         ("G0 X30 Z5\nG162 X24 Z-20 H500 P9.999 Q0.001 V1 A29.5 F1.5 B90 I-0.1 J180\n", nc201), // 9 999 passes
-        (include_str!("../programs/g32_g33_g34.nc"), metric),
         ("G0 X30 Z5\nG34 X30 Z-20 F2 K-0.05\nG34 W-1 F2 K-5\n", metric), // ends in the G34 bound alarm
-    ];
+        ("G0 X50 Z2\nG90 X40 Z-40 I-5 F0.3\nX39\nX38\nG94 X20 Z-1 K-1\nZ-2\nG90 X40 Z2\n", metric), // the last: GEOMETRY on Z (W = 0)
+    ]);
     let mut total_events = 0;
-    for (program, config) in programs {
+    for (program, config) in &programs {
         let (events, alarmed, allocations) = expand_counting(program.as_bytes(), *config);
         assert_eq!(allocations, 0, "the production expander allocated on:\n{program}");
         let filled = fill_counting(program.as_bytes(), *config);
