@@ -253,6 +253,8 @@ fn move_kind(k: MoveKind) -> &'static str {
         MoveKind::Rapid => "rapid (G00)",
         MoveKind::Feed => "feed (G01)",
         MoveKind::Thread => "thread (G32)",
+        MoveKind::ArcCw => "arc clockwise (G02)",
+        MoveKind::ArcCcw => "arc counter-clockwise (G03)",
     }
 }
 
@@ -262,6 +264,8 @@ fn move_field(r: &Move, c: &Move) -> Option<(&'static str, String, String)> {
         .or_else(|| differ("x", r.x, c.x))
         .or_else(|| differ("z", r.z, c.z))
         .or_else(|| differ("feed", r.feed, c.feed))
+        .or_else(|| differ("cx", r.cx, c.cx))
+        .or_else(|| differ("cz", r.cz, c.cz))
         .or_else(|| differ("angle", r.angle, c.angle))
         .or_else(|| differ("lead_change", r.lead_change, c.lead_change))
         .or_else(|| differ("lead_change_angle", r.lead_change_angle, c.lead_change_angle))

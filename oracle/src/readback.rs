@@ -87,6 +87,7 @@ fn motion(block: &cycle_vocab::Block, grid: Grid) -> Result<Motion, String> {
         MoveKind::Rapid => b"XZ",
         MoveKind::Feed => b"XZF",
         MoveKind::Thread => b"XZFQKJR",
+        MoveKind::ArcCw | MoveKind::ArcCcw => b"XZIKF",
     };
     if let Some(l) = block.letters().find(|l| !allowed.contains(l)) {
         return err(l as char, "not part of this motion's canonical form");

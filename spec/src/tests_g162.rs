@@ -50,7 +50,7 @@ fn worked_example() {
     assert!(t.moves().skip(1).all(|m| match m.kind {
         MoveKind::Feed => m.feed == 5_000_000,
         MoveKind::Thread => m.feed == 15_000 && m.rule == Rule::G162F,
-        MoveKind::Rapid => false,
+        MoveKind::Rapid | MoveKind::ArcCw | MoveKind::ArcCcw => false,
     }));
     let pass_rules: Vec<Rule> = t
         .events

@@ -38,6 +38,10 @@ pub enum AlarmCode {
     TooManyPasses,
     /// A documented feature this reference does not model.
     Unsupported,
+    /// A sequence number a cycle's P or Q names is not where the cycle needs it (CNT.FIND).
+    BlockNotFound,
+    /// A cycle's contour has more blocks than the documented bound (CNT.MAX).
+    ContourTooLong,
 }
 
 impl AlarmCode {
@@ -55,9 +59,11 @@ impl AlarmCode {
             AlarmCode::OutOfRange => 2002,
             AlarmCode::Precision => 2003,
             AlarmCode::NotInteger => 2004,
+            AlarmCode::BlockNotFound => 2005,
             AlarmCode::Geometry => 3001,
             AlarmCode::TooManyPasses => 3002,
             AlarmCode::Unsupported => 3003,
+            AlarmCode::ContourTooLong => 3004,
         }
     }
 
@@ -75,9 +81,11 @@ impl AlarmCode {
             AlarmCode::OutOfRange => "value out of range",
             AlarmCode::Precision => "more decimals than the least increment",
             AlarmCode::NotInteger => "decimal point in an integer value",
-            AlarmCode::Geometry => "cycle points do not form a legal thread",
+            AlarmCode::Geometry => "cycle points do not form a legal path",
             AlarmCode::TooManyPasses => "cycle exceeds the maximum pass count",
             AlarmCode::Unsupported => "function not supported",
+            AlarmCode::BlockNotFound => "sequence number not found where the cycle needs it",
+            AlarmCode::ContourTooLong => "contour longer than the supported number of blocks",
         }
     }
 }

@@ -97,6 +97,12 @@ impl Trace {
                         }
                         line
                     }
+                    // The centre as absolute I (X, diameter) and K (Z), as a control reads them
+                    // in absolute arc-centre mode (G90.1): the arc's start is not on its line.
+                    MoveKind::ArcCw | MoveKind::ArcCcw => {
+                        let g = if m.kind == MoveKind::ArcCw { "G02" } else { "G03" };
+                        format!("{g} X{x} Z{z} I{} K{} F{f}", fixed(m.cx, d), fixed(m.cz, d))
+                    }
                 }
             }
         }

@@ -12,6 +12,12 @@
 //! counts) the lead `L` satisfies `L² = feed² + 720 000·lead_change·s / lead_change_angle`. A
 //! shrinking lead stops changing once it is ≤ `lead_floor` (0: no floor). A constant lead has
 //! `lead_change = lead_change_angle = lead_floor = 0`.
+//!
+//! **Arcs** (G02/G03, ARC.*): an arc move carries its end point and its centre, absolute, X of
+//! the centre on diameter like every X (the centre as the engines decided it: given by I/K, or
+//! the R-centre rounded once to the grid). Its start is the position before it; the arc runs
+//! about the centre on the circle through that start, clockwise (`ArcCw`, G02) or counter-clockwise
+//! (`ArcCcw`, G03) viewed with +Z to the right and +X up (ARC.DIR). Other moves have centre 0, 0.
 
 use crate::rule::Rule;
 
@@ -26,6 +32,10 @@ pub enum MoveKind {
     Feed,
     /// Spindle-synchronized thread move (`G32`), thread cuts and pull-outs alike.
     Thread,
+    /// Clockwise arc at feed (`G02`), about the centre `cx`, `cz`.
+    ArcCw,
+    /// Counter-clockwise arc at feed (`G03`), about the centre `cx`, `cz`.
+    ArcCcw,
 }
 
 /// One motion to an absolute end point.
@@ -37,8 +47,13 @@ pub struct Move {
     pub x: i64,
     /// End Z, increments.
     pub z: i64,
-    /// Feed (Feed) or lead (Thread) in lead counts; 0 for Rapid.
+    /// Feed (Feed, arcs) or lead (Thread) in lead counts; 0 for Rapid.
     pub feed: i64,
+    /// An arc's centre: X (diameter) and Z, increments, absolute; 0 for other moves.
+    #[cfg_attr(feature = "std", serde(default))]
+    pub cx: i64,
+    #[cfg_attr(feature = "std", serde(default))]
+    pub cz: i64,
     /// Spindle start angle of a thread move, 0.001°; 0 otherwise.
     pub angle: u32,
     /// Lead change of a thread move per `lead_change_angle`, lead counts, signed; 0 for a
@@ -57,15 +72,15 @@ pub struct Move {
 
 impl Move {
     pub const fn rapid(x: i64, z: i64, rule: Rule) -> Move {
-        Move { kind: MoveKind::Rapid, x, z, feed: 0, angle: 0, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule }
+        Move { kind: MoveKind::Rapid, x, z, feed: 0, cx: 0, cz: 0, angle: 0, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule }
     }
 
     pub const fn feed(x: i64, z: i64, feed: i64, rule: Rule) -> Move {
-        Move { kind: MoveKind::Feed, x, z, feed, angle: 0, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule }
+        Move { kind: MoveKind::Feed, x, z, feed, cx: 0, cz: 0, angle: 0, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule }
     }
 
     pub const fn thread(x: i64, z: i64, lead: i64, angle: u32, rule: Rule) -> Move {
-        Move { kind: MoveKind::Thread, x, z, feed: lead, angle, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule }
+        Move { kind: MoveKind::Thread, x, z, feed: lead, cx: 0, cz: 0, angle, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule }
     }
 
     /// A thread move whose lead starts at `lead` and changes by `change` per `change_angle`
@@ -85,7 +100,14 @@ impl Move {
         if change == 0 {
             return Move::thread(x, z, lead, angle, rule);
         }
-        Move { kind: MoveKind::Thread, x, z, feed: lead, angle, lead_change: change, lead_change_angle: change_angle, lead_floor: floor, rule }
+        Move { kind: MoveKind::Thread, x, z, feed: lead, cx: 0, cz: 0, angle, lead_change: change, lead_change_angle: change_angle, lead_floor: floor, rule }
+    }
+
+    /// An arc at `feed` to (`x`, `z`) about the centre (`cx`, `cz`): clockwise (G02) when
+    /// `clockwise`, else counter-clockwise (G03).
+    pub const fn arc(clockwise: bool, x: i64, z: i64, cx: i64, cz: i64, feed: i64, rule: Rule) -> Move {
+        let kind = if clockwise { MoveKind::ArcCw } else { MoveKind::ArcCcw };
+        Move { kind, x, z, feed, cx, cz, angle: 0, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule }
     }
 }
 
@@ -95,6 +117,9 @@ impl Move {
 #[cfg_attr(feature = "std", serde(rename_all = "SCREAMING_SNAKE_CASE"))]
 pub enum PassKind {
     Rough,
+    /// The semi-finish pass of a stock-removal cycle (G71.LASTPASS): the contour with the
+    /// finishing allowances left.
+    Semi,
     Finish,
     Spring,
 }
@@ -103,6 +128,7 @@ impl PassKind {
     pub const fn name(self) -> &'static str {
         match self {
             PassKind::Rough => "ROUGH",
+            PassKind::Semi => "SEMI",
             PassKind::Finish => "FINISH",
             PassKind::Spring => "SPRING",
         }

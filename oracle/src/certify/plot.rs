@@ -49,7 +49,7 @@ fn is_pullout(rule: Rule) -> bool {
 
 fn pass_colour(kind: Option<PassKind>) -> &'static str {
     match kind {
-        Some(PassKind::Rough) => ROUGH,
+        Some(PassKind::Rough | PassKind::Semi) => ROUGH,
         Some(PassKind::Finish) => FINISH,
         Some(PassKind::Spring) => SPRING,
         None => FEED,
@@ -214,7 +214,7 @@ pub fn svg(title: &str, config: &Config, reference: &Trace, candidate: Option<&T
         let (x1, y1, x2, y2) = (px(seg.from.1), py(seg.from.0), px(seg.to.1), py(seg.to.0));
         let (colour, extra, class) = match seg.m.kind {
             MoveKind::Rapid => (RAPID, r#" stroke-dasharray="5 4""#, "rapid"),
-            MoveKind::Feed => (FEED, "", "feed"),
+            MoveKind::Feed | MoveKind::ArcCw | MoveKind::ArcCcw => (FEED, "", "feed"),
             MoveKind::Thread if is_pullout(seg.m.rule) => (PULLOUT, "", "pullout"),
             MoveKind::Thread => (pass_colour(seg.pass), "", "thread"),
         };
