@@ -6,6 +6,8 @@
 //! `proofs/README.md` for the properties, bounds and commands.
 #![forbid(unsafe_code)]
 
+pub use cycle_harness::{check, cover};
+
 pub mod program;
 pub mod source;
 pub mod model;
