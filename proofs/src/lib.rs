@@ -21,3 +21,6 @@ pub mod expander_envelope;
 pub mod g92_pullout;
 pub mod g162_split;
 pub mod g162_pitch;
+
+pub mod invariants;
+pub mod trace_depths;
