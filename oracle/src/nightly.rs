@@ -223,13 +223,13 @@ fn findings(plan: &Plan, target: Target, artifacts: &Path, logs: &Path, errors: 
         tmin.extend(["--runs".to_string(), "2000".to_string(), artifact.display().to_string()]);
         let hash = file.split_once('-').map_or(file.as_str(), |(_, h)| h).to_string();
         // tmin writes its steps to fuzz/artifacts/TARGET/minimized-from-*, and names the last
-        // one in its closing "Reproduce with:" line.
+        // one in its closing "Reproduce with:" line (from the root, or from fuzz/ in older
+        // cargo-fuzz versions).
         let minimized = match run_logged(cargo_fuzz(plan, &tmin), &logs.join(format!("{name}.tmin.{hash}.log"))) {
             Ok((_, log)) => log
                 .split_whitespace()
                 .rfind(|w| w.contains("minimized-from-"))
-                .map(|w| plan.root.join("fuzz").join(w))
-                .filter(|p| p.is_file()),
+                .and_then(|w| [plan.root.join(w), plan.root.join("fuzz").join(w)].into_iter().find(|p| p.is_file())),
             Err(e) => {
                 errors.push(e);
                 None
