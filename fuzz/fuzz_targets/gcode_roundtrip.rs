@@ -1,3 +1,7 @@
 //! `gcode_roundtrip`: see `cycle_oracle::fuzzing` (the body, shared with `cargo test`).
 #![no_main]
-libfuzzer_sys::fuzz_target!(|data: &[u8]| cycle_oracle::fuzzing::fuzz(cycle_oracle::fuzzing::Target::GcodeRoundtrip, data));
+libfuzzer_sys::fuzz_target!(|data: &[u8]| {
+    if let Err(report) = cycle_oracle::fuzzing::Target::GcodeRoundtrip.run(data) {
+        panic!("gcode_roundtrip failed:\n{report}");
+    }
+});

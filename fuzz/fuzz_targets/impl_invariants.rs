@@ -1,3 +1,8 @@
-//! `impl_invariants`: see `cycle_oracle::fuzzing` (the body, shared with `cargo test`).
+//! `impl_invariants`: see `cycle_proofs::invariants` (the proof harness bodies, shared with Kani
+//! and `cargo test`).
 #![no_main]
-libfuzzer_sys::fuzz_target!(|data: &[u8]| cycle_oracle::fuzzing::fuzz(cycle_oracle::fuzzing::Target::ImplInvariants, data));
+libfuzzer_sys::fuzz_target!(|data: &[u8]| {
+    if let Err(report) = cycle_proofs::invariants::fuzz(data) {
+        panic!("impl_invariants failed:\n{report}");
+    }
+});

@@ -6,8 +6,11 @@
 //!    through spec and impl; all must conform;
 //! 2. `campaign`: a fixed-seed differential campaign over every generator family
 //!    (`crate::gen::any_case`), `cases` cases, spec vs impl by the conformance relation;
-//! 3. `fuzz replay`: the committed seed corpus and regression cases of every fuzz target
-//!    (`fuzz/corpus/`, `tests/fuzz_regressions/`) through the targets' bodies;
+//! 3. `fuzz replay`: the committed decoded seeds and regression cases (`fuzz/seeds/`,
+//!    `tests/fuzz_regressions/`) of the program fuzz targets through their bodies, each case's
+//!    expected verdict checked (`crate::fuzzing::replay`); the `impl_invariants` cases are read
+//!    here and replayed by step 4 (`tests/tests/fuzz_replay.rs`: the harness bodies live in
+//!    `cycle-proofs`, which the oracle does not link);
 //! 4. `cargo test`: the workspace's tests with `CI=true INSTA_UPDATE=no` (snapshots checked,
 //!    never written), a fixed `CYCLECHECK_SEED`, `CYCLECHECK_CASES` and
 //!    `CYCLECHECK_PROOF_CASES` — snapshots, properties, differential campaigns, the bounded
@@ -18,7 +21,7 @@
 
 use crate::campaign::{self, Verdict};
 use crate::engine::{ImplEngine, SpecEngine};
-use crate::fuzzing::Target;
+use crate::fuzzing::{committed, decoded, replay, Target};
 use crate::{corpus, gen};
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config as PtConfig, RngAlgorithm, TestRng, TestRunner};
@@ -109,41 +112,41 @@ pub fn campaign_step(cases: u32, seed: u64) -> Step {
     })
 }
 
-/// The committed inputs of `target`: seed corpus and regression cases (path, bytes).
-pub fn committed_inputs(root: &Path, target: Target) -> Vec<(PathBuf, Vec<u8>)> {
-    let mut out = Vec::new();
-    for dir in [root.join("fuzz/corpus").join(target.name()), root.join("tests/fuzz_regressions").join(target.name())] {
-        let Ok(entries) = std::fs::read_dir(&dir) else { continue };
-        let mut paths: Vec<PathBuf> = entries.filter_map(|e| Some(e.ok()?.path())).filter(|p| p.is_file()).collect();
-        paths.sort();
-        for p in paths {
-            if p.file_name().is_some_and(|n| n.to_string_lossy().starts_with('.') || n == "README.md") {
-                continue;
-            }
-            if let Ok(bytes) = std::fs::read(&p) {
-                out.push((p, bytes));
-            }
-        }
-    }
-    out
-}
-
 /// Step 3.
 pub fn replay_step(root: &Path) -> Step {
     step("fuzz replay", || {
-        let (mut n, mut failures) = (0, Vec::new());
+        let (mut n, mut harness_cases, mut failures) = (0, 0, Vec::new());
         for t in Target::ALL {
-            for (path, bytes) in committed_inputs(root, t) {
-                n += 1;
-                let outcome = std::panic::catch_unwind(|| t.run(&bytes));
-                match outcome {
-                    Ok(Ok(())) => {}
-                    Ok(Err(report)) => failures.push(format!("{} {}:\n{report}", t.name(), path.display())),
-                    Err(_) => failures.push(format!("{} {}: the body panicked", t.name(), path.display())),
+            for dir in [committed::seeds_dir(root, t), committed::regressions_dir(root, t)] {
+                if t == Target::ImplInvariants {
+                    match decoded::load_harnesses(&dir) {
+                        Ok(cases) => harness_cases += cases.len(),
+                        Err(e) => failures.push(e),
+                    }
+                    continue;
+                }
+                let cases = match decoded::load_programs(&dir) {
+                    Ok(cases) => cases,
+                    Err(e) => {
+                        failures.push(e);
+                        continue;
+                    }
+                };
+                for (name, program, case) in cases {
+                    n += 1;
+                    let here = format!("{} {}/{name}", t.name(), dir.display());
+                    match std::panic::catch_unwind(|| replay::replay(t, &program, &case)) {
+                        Ok(Ok(())) => {}
+                        Ok(Err(report)) => failures.push(format!("{here}:\n{report}")),
+                        Err(_) => failures.push(format!("{here}: the body panicked")),
+                    }
                 }
             }
         }
-        let summary = format!("{n} committed inputs, {} fail", failures.len());
+        let summary = format!(
+            "{n} committed program cases, {} fail; {harness_cases} impl_invariants cases (replayed by `cargo test`)",
+            failures.len()
+        );
         (n > 0 && failures.is_empty(), summary, failures.into_iter().take(3).collect::<Vec<_>>().join("\n\n"))
     })
 }
@@ -265,8 +268,8 @@ pub fn command(args: &[String]) -> Result<u8, String> {
             other => return Err(format!("gate: unknown argument {other:?}")),
         }
     }
-    if !o.root.join("fuzz/corpus").is_dir() {
-        return Err("gate: run it from the repository root (no fuzz/corpus here)".to_string());
+    if !o.root.join("fuzz/seeds").is_dir() {
+        return Err("gate: run it from the repository root (no fuzz/seeds here)".to_string());
     }
     let (steps, total) = run(&o);
     print!("{}", report(&steps, total));

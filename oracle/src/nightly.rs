@@ -2,21 +2,24 @@
 //!
 //! For each target ([`crate::fuzzing::Target`]), from the repository root:
 //!
-//! 1. `cargo +nightly fuzz run TARGET OUT/corpus/TARGET fuzz/corpus/TARGET -- -max_total_time=B
+//! 1. the committed decoded seeds (`fuzz/seeds/TARGET/`) are encoded into libFuzzer's corpus
+//!    folder `fuzz/corpus/TARGET/` ([`committed::encode_corpus`]; not committed);
+//! 2. `cargo +nightly fuzz run TARGET OUT/corpus/TARGET fuzz/corpus/TARGET -- -max_total_time=B
 //!    -dict=fuzz/gcode.dict -artifact_prefix=OUT/artifacts/TARGET/ -print_final_stats=1`:
 //!    libFuzzer writes new inputs to the scratch corpus (kept across nights when OUT is) and only
-//!    reads the committed seeds; a crash or divergence stops the target's run;
-//! 2. `cargo +nightly fuzz cmin TARGET OUT/corpus/TARGET`: minimizes the scratch corpus;
-//! 3. each finding (`crash-*`, `timeout-*`, `oom-*`, `leak-*` artifact) is minimized with
-//!    `cargo +nightly fuzz tmin`, copied to `tests/fuzz_regressions/TARGET/` (replayed by
-//!    `cargo test`, `tests/tests/fuzz_replay.rs`: commit it), and its report taken from the
-//!    target's body run in this process;
-//! 4. `OUT/summary.json` and `OUT/summary.txt`: per target the executions, execs/s, libFuzzer's
+//!    reads the seeds; a crash or divergence stops the target's run;
+//! 3. `cargo +nightly fuzz cmin TARGET OUT/corpus/TARGET`: minimizes the scratch corpus;
+//! 4. each finding (`crash-*`, `timeout-*`, `oom-*`, `leak-*` artifact) is minimized with
+//!    `cargo +nightly fuzz tmin` and written decoded to `tests/fuzz_regressions/TARGET/`
+//!    ([`committed::write_regression`]: replayed by `cargo test`, `tests/tests/fuzz_replay.rs`:
+//!    commit it), with the target's report on it in this build;
+//! 5. `OUT/summary.json` and `OUT/summary.txt`: per target the executions, execs/s, libFuzzer's
 //!    coverage (`cov`: edges, `ft`: features), corpus size before and after `cmin`, findings.
 //!
 //! The exit code is 1 when anything was found or a step failed, else 0.
 
-use crate::fuzzing::{self, Target};
+use crate::fuzzing::committed;
+use crate::fuzzing::Target;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -48,13 +51,15 @@ pub struct Stats {
     pub peak_rss_mb: u64,
 }
 
-/// One finding, minimized and copied into the regression folder.
+/// One finding, minimized and written decoded into the regression folder.
 #[derive(Clone, Debug, Serialize)]
 pub struct Finding {
     pub artifact: String,
     pub minimized: Option<String>,
+    /// The regression case's name in `tests/fuzz_regressions/<target>/` (`NAME.json`, and
+    /// `NAME.nc` for the program targets).
     pub regression: String,
-    /// The body's report in this build (`cyclecheck`), or why it does not reproduce here.
+    /// The body's report in this build, or why it does not reproduce here.
     pub report: String,
 }
 
@@ -158,7 +163,11 @@ pub fn run_target(plan: &Plan, target: Target) -> TargetSummary {
             return summary;
         }
     }
-    let seeds = plan.root.join("fuzz/corpus").join(name);
+    if let Err(e) = committed::encode_corpus(&plan.root, &[target]) {
+        summary.errors.push(format!("cannot encode the seeds: {e}"));
+        return summary;
+    }
+    let seeds = committed::corpus_dir(&plan.root, target);
     let mut args = vec!["run".to_string(), name.to_string()];
     args.extend(features_args(plan));
     args.extend([corpus.display().to_string(), seeds.display().to_string(), "--".to_string()]);
@@ -197,14 +206,13 @@ pub fn run_target(plan: &Plan, target: Target) -> TargetSummary {
     summary
 }
 
-/// Minimizes each artifact and copies it into the regression folder.
+/// Minimizes each artifact and writes it decoded into the regression folder.
 fn findings(plan: &Plan, target: Target, artifacts: &Path, logs: &Path, errors: &mut Vec<String>) -> Vec<Finding> {
     let name = target.name();
     let mut out = Vec::new();
     let Ok(entries) = std::fs::read_dir(artifacts) else { return out };
     let mut files: Vec<PathBuf> = entries.filter_map(|e| Some(e.ok()?.path())).collect();
     files.sort();
-    let regressions = plan.root.join("tests/fuzz_regressions").join(name);
     for artifact in files {
         let file = artifact.file_name().map(|f| f.to_string_lossy().into_owned()).unwrap_or_default();
         if !["crash-", "timeout-", "oom-", "leak-"].iter().any(|p| file.starts_with(p)) {
@@ -215,36 +223,32 @@ fn findings(plan: &Plan, target: Target, artifacts: &Path, logs: &Path, errors: 
         tmin.extend(["--runs".to_string(), "2000".to_string(), artifact.display().to_string()]);
         let hash = file.split_once('-').map_or(file.as_str(), |(_, h)| h).to_string();
         // tmin writes its steps to fuzz/artifacts/TARGET/minimized-from-*, and names the last
-        // one in its closing "Reproduce with:" line.
+        // one in its closing "Reproduce with:" line (from the root, or from fuzz/ in older
+        // cargo-fuzz versions).
         let minimized = match run_logged(cargo_fuzz(plan, &tmin), &logs.join(format!("{name}.tmin.{hash}.log"))) {
             Ok((_, log)) => log
                 .split_whitespace()
                 .rfind(|w| w.contains("minimized-from-"))
-                .map(|w| plan.root.join("fuzz").join(w))
-                .filter(|p| p.is_file()),
+                .and_then(|w| [plan.root.join(w), plan.root.join("fuzz").join(w)].into_iter().find(|p| p.is_file())),
             Err(e) => {
                 errors.push(e);
                 None
             }
         };
         let best = minimized.clone().unwrap_or_else(|| artifact.clone());
-        let regression = regressions.join(&file);
-        let copied = std::fs::create_dir_all(&regressions).and_then(|()| std::fs::copy(&best, &regression));
-        if let Err(e) = copied {
-            errors.push(format!("cannot copy {} to {}: {e}", best.display(), regression.display()));
-        }
-        let report = match std::fs::read(&best) {
-            Ok(bytes) => match std::panic::catch_unwind(|| target.run(&bytes)) {
-                Err(_) => "the body panicked in this process (see the run log)".to_string(),
-                Ok(Err(report)) => report,
-                Ok(Ok(())) => "does not reproduce in this build of cyclecheck (built without the fuzz run's features?)".to_string(),
-            },
-            Err(e) => format!("cannot read {}: {e}", best.display()),
-        };
+        let found_by = format!(
+            "cyclecheck fuzz{} (libFuzzer artifact {file}{})",
+            plan.features.as_deref().map(|f| format!(" --features {f}")).unwrap_or_default(),
+            if minimized.is_some() { ", minimized by cargo fuzz tmin" } else { ", not minimized" }
+        );
+        let report = committed::write_regression(&plan.root, target, &best, &file, &found_by).unwrap_or_else(|e| {
+            errors.push(format!("cannot write the regression {file}: {e}"));
+            e
+        });
         out.push(Finding {
             artifact: artifact.display().to_string(),
             minimized: minimized.map(|m| m.display().to_string()),
-            regression: regression.display().to_string(),
+            regression: committed::regressions_dir(&plan.root, target).join(&file).display().to_string(),
             report,
         });
     }
@@ -300,23 +304,10 @@ pub fn summary_text(plan: &Plan, summaries: &[TargetSummary]) -> String {
     t
 }
 
-/// Writes the built-in seed corpus ([`fuzzing::seeds`]) into `root/fuzz/corpus/<target>/`.
-pub fn write_seeds(root: &Path) -> Result<usize, String> {
-    let mut n = 0;
-    for t in Target::ALL {
-        let dir = root.join("fuzz/corpus").join(t.name());
-        std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-        for (file, bytes) in fuzzing::seeds(t) {
-            std::fs::write(dir.join(&file), bytes).map_err(|e| format!("{file}: {e}"))?;
-            n += 1;
-        }
-    }
-    Ok(n)
-}
-
-/// `cyclecheck fuzz [--budget SECS] [--targets T,..] [--out DIR] [--features F]` or
-/// `cyclecheck fuzz --write-seeds`, run from the repository root: prints the text summary,
-/// returns the exit code (0 nothing found, 1 findings or a failed step).
+/// `cyclecheck fuzz [--budget SECS] [--targets T,..] [--out DIR] [--features F]`,
+/// `cyclecheck fuzz --write-seeds` or `cyclecheck fuzz --decode TARGET FILE [NAME]`, run from the
+/// repository root: prints the text summary, returns the exit code (0 nothing found, 1 findings
+/// or a failed step).
 pub fn command(args: &[String]) -> Result<u8, String> {
     let root = PathBuf::from(".");
     if !root.join("fuzz/Cargo.toml").is_file() {
@@ -341,8 +332,18 @@ pub fn command(args: &[String]) -> Result<u8, String> {
             "--out" => plan.out = PathBuf::from(value("--out")?),
             "--features" => plan.features = Some(value("--features")?),
             "--write-seeds" => {
-                let n = write_seeds(&plan.root)?;
-                println!("wrote {n} seed files under fuzz/corpus/");
+                let n = committed::write_seeds(&plan.root)?;
+                println!("wrote {n} decoded seeds under fuzz/seeds/ and encoded them into fuzz/corpus/");
+                return Ok(0);
+            }
+            "--decode" => {
+                let target = value("--decode")?;
+                let target = Target::by_name(&target).ok_or_else(|| format!("--decode: no target {target:?}"))?;
+                let file = PathBuf::from(it.next().ok_or("--decode TARGET needs a FILE")?);
+                let stem = file.file_name().map(|f| f.to_string_lossy().into_owned()).unwrap_or_default();
+                let name = it.next().cloned().unwrap_or(stem);
+                let report = committed::write_regression(&plan.root, target, &file, &name, "cyclecheck fuzz --decode")?;
+                println!("wrote {}/{name}: {report}", committed::regressions_dir(&plan.root, target).display());
                 return Ok(0);
             }
             other => return Err(format!("fuzz: unknown argument {other:?}")),

@@ -254,6 +254,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
         let chamfer = ceil_div(chamfer_tenths.max(i64::from(defaults.p5130_chamfer)) * lead, 10 * lpi) + 1;
         pull_bound = j.unwrap_or(0).max(kk.unwrap_or(0)).max(chamfer);
     }
+    src.note_program(prog.bytes());
     check!(src, !prog.overflowed() && prog.len() <= scope.max_program, "the program fits the scope's buffer bound");
 
     // The points (X diameter): A, D = A + (U, W), C.x = D.x + 2i.

@@ -97,6 +97,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
         prog.len_word(b'J', j, 3);
     }
     prog.end_block();
+    src.note_program(prog.bytes());
     check!(src, !prog.overflowed() && prog.len() <= scope.max_program, "the program fits the scope's buffer bound");
     let config = Config { dialect: Dialect::Nc201, grid, start_x: sx, start_z: sz, ..Config::default() };
 

@@ -124,6 +124,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
         prog.len_word(b'K', k, dec);
     }
     prog.end_block();
+    src.note_program(prog.bytes());
     check!(src, !prog.overflowed() && prog.len() <= scope.max_program, "the program fits the scope's buffer bound");
 
     let params = Params { no19_pullout: Some(i64::from(no19)), ..Params::default() };

@@ -6,6 +6,8 @@
 //! `proofs/README.md` for the properties, bounds and commands.
 #![forbid(unsafe_code)]
 
+pub use cycle_harness::{check, cover};
+
 pub mod program;
 pub mod source;
 pub mod model;
@@ -19,3 +21,6 @@ pub mod expander_envelope;
 pub mod g92_pullout;
 pub mod g162_split;
 pub mod g162_pitch;
+
+pub mod invariants;
+pub mod trace_depths;

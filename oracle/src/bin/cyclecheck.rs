@@ -28,7 +28,8 @@ usage:
   cyclecheck corpus [--format text|json]                    every built-in example, spec vs impl
   cyclecheck gate [--cases N] [--seed S] [--no-cargo-test]  pre-merge gate
   cyclecheck fuzz [--budget SECS] [--targets T,..] [--out DIR] [--features F] [--write-seeds]
-                                                            nightly fuzz campaign
+                  [--decode TARGET FILE [NAME]]             nightly fuzz campaign; seeds; a
+                                                            fuzz input as a decoded regression
 options:
   --dialect gsk|fanuc|nc201 input conventions (default gsk)
   --units metric|inch       (default metric)

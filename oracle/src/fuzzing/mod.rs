@@ -1,6 +1,8 @@
-//! The bodies of the cargo-fuzz targets (`fuzz/fuzz_targets/*.rs` are one line each), so the
-//! same code runs under libFuzzer, in `cargo test` (which replays the committed seed corpus and
-//! every committed regression case, `tests/tests/fuzz_replay.rs`) and in `cyclecheck fuzz`.
+//! The bodies of the program fuzz targets (`fuzz/fuzz_targets/*.rs` are a few lines each), so
+//! the same code runs under libFuzzer, in `cargo test` (which replays the committed seeds and
+//! regression cases, `tests/tests/fuzz_replay.rs`), in `cyclecheck gate` and in `cyclecheck
+//! fuzz`. The fourth target, `impl_invariants`, runs the proof harness bodies
+//! (`cycle_proofs::invariants`); this crate knows only its name.
 //!
 //! Each body takes the fuzzer's raw bytes and returns `Err` with a report — the conformance
 //! relation's rich divergence, or the broken property — when the case fails; the targets panic
@@ -10,21 +12,22 @@
 //! |---|---|---|
 //! | `parse_blocks` | any bytes as a program | the lexer ends, one alarm at most, on a line of the program; both engines expand it under two configurations without a panic, reject it with an alarm on a line of the program, and conform (a rejection is the same alarm in both) |
 //! | `diff_spec_impl` | [`CycleInput`]: a generator family and its knobs | spec and impl conform ([`crate::conformance::check`]) |
-//! | `impl_invariants` | draws of a proof harness ([`FuzzSource`]) | the `cycle-proofs` harness bodies (envelope, event bound, return to A, G92 pull-out table, depth schedule by induction and iteration, the G162 split and variable pitch) and the depth properties on the trace ([`trace_depths`]) |
 //! | `gcode_roundtrip` | [`CycleInput`] | canonical expanded G-code of either engine reads back ([`crate::readback`]) as the same motions: kind, end point, feed or lead, angle, lead change |
+//!
+//! Committed cases are stored decoded ([`decoded`]): [`replay`] checks their verdicts,
+//! [`seeds`] holds the built-in seeds and encodes them for libFuzzer.
 
+pub mod committed;
+pub mod decoded;
 mod input;
-mod source;
-pub mod trace_depths;
+pub mod replay;
+pub mod seeds;
 
 pub use input::CycleInput;
-pub use source::FuzzSource;
 
 use crate::campaign::{judge, Verdict};
 use crate::engine::{Engine, ImplEngine, SpecEngine};
 use crate::readback::{self, Motion};
-use cycle_proofs::source::Stop;
-use cycle_proofs::{depth_bounds, depth_step_monotone, expander_envelope, g162_pitch, g162_split, g92_pullout, schedule::Production};
 use cycle_vocab::{Blocks, Config, Dialect, Grid, Increment, Rule, Units};
 
 /// A fuzz target.
@@ -49,25 +52,22 @@ impl Target {
         }
     }
 
+    /// The targets whose bodies are here (not `impl_invariants`).
+    pub const PROGRAMS: [Target; 3] = [Target::ParseBlocks, Target::DiffSpecImpl, Target::GcodeRoundtrip];
+
     pub fn by_name(name: &str) -> Option<Target> {
         Target::ALL.into_iter().find(|t| t.name() == name)
     }
 
-    /// Runs the target's body on one input.
+    /// Runs the target's body on one input; `impl_invariants` is not run here (its body is
+    /// `cycle_proofs::invariants::fuzz`).
     pub fn run(self, data: &[u8]) -> Result<(), String> {
         match self {
             Target::ParseBlocks => parse_blocks(data),
             Target::DiffSpecImpl => diff_spec_impl(data),
-            Target::ImplInvariants => impl_invariants(data),
             Target::GcodeRoundtrip => gcode_roundtrip(data),
+            Target::ImplInvariants => Err("impl_invariants runs in cycle-proofs (cycle_proofs::invariants::fuzz)".to_string()),
         }
-    }
-}
-
-/// Runs `target` on `data` and panics with the report on a failure (for `fuzz_target!`).
-pub fn fuzz(target: Target, data: &[u8]) {
-    if let Err(report) = target.run(data) {
-        panic!("{} failed:\n{report}", target.name());
     }
 }
 
@@ -117,7 +117,7 @@ pub fn parse_blocks(data: &[u8]) -> Result<(), String> {
 }
 
 /// A conforming verdict, or the report of the case.
-fn verdict_ok(verdict: Verdict, program: &[u8], config: &Config) -> Result<(), String> {
+pub(crate) fn verdict_ok(verdict: Verdict, program: &[u8], config: &Config) -> Result<(), String> {
     let report = match verdict {
         Verdict::Conform(_) => return Ok(()),
         Verdict::Diverge(d) => d.to_string(),
@@ -134,49 +134,19 @@ pub fn diff_spec_impl(data: &[u8]) -> Result<(), String> {
     verdict_ok(verdict, &case.program, &case.config).map_err(|e| format!("family {}\n{e}", case.family))
 }
 
-/// `impl_invariants`: the proof harness bodies of `cycle-proofs` on the production expander,
-/// with the fuzzer choosing the harness and every draw.
-pub fn impl_invariants(data: &[u8]) -> Result<(), String> {
-    // Small lengths, where legal cycles have many passes (the proofs' `random_small` scope).
-    const SMALL: expander_envelope::Scope =
-        expander_envelope::Scope { max_start: 2000, max_len: 60, max_lead: 3000, max_passes: 60, max_program: 160, ..expander_envelope::WIDE };
-    // Wider than the Kani scope: lengths to 1 mm·1000, any lead, the writer's whole buffer.
-    const G92: g92_pullout::Scope = g92_pullout::Scope {
-        max_len: 1_000_000,
-        max_lead: 99_990_000,
-        max_program: cycle_proofs::program::CAPACITY,
-        ..g92_pullout::KANI
-    };
-    const SEQUENCE: depth_bounds::Scope = depth_bounds::Scope { max_passes: 64, ..depth_bounds::KANI };
-    let mut src = FuzzSource::new(data);
-    let (name, outcome) = match cycle_proofs::source::Source::choose(&mut src, 6) {
-        0 => ("expander_never_panics (wide)", expander_envelope::body(&mut src, &expander_envelope::WIDE)),
-        1 => ("expander_never_panics (small)", expander_envelope::body(&mut src, &SMALL)),
-        2 => ("g92_pullout_total", g92_pullout::body(&mut src, &G92)),
-        3 => ("depth_step_monotone", depth_step_monotone::body(&mut src, &Production, &depth_step_monotone::FULL)),
-        4 => ("depth_bounds", depth_bounds::body(&mut src, &Production, &SEQUENCE)),
-        // Index 5 is split three ways (the G162 harnesses came after the committed cases, whose
-        // first choice keeps its meaning).
-        _ => match cycle_proofs::source::Source::choose(&mut src, 3) {
-            0 => ("trace_depths", trace_depths::body(&mut src)),
-            1 => ("g162_split_exact", g162_split::body(&mut src, &g162_split::KANI)),
-            _ => ("g162_variable_pitch", g162_pitch::body(&mut src, &g162_pitch::KANI)),
-        },
-    };
-    match outcome {
-        Err(Stop::Failed(msg)) => Err(format!("harness {name}: {msg}\ndraws: {:?}", src.draws)),
-        Ok(()) | Err(Stop::Rejected) => Ok(()),
-    }
-}
-
 /// `gcode_roundtrip`: canonical expanded G-code of each engine, read back, gives its motions.
 pub fn gcode_roundtrip(data: &[u8]) -> Result<(), String> {
     let case = CycleInput::from_bytes(data).case();
+    gcode_roundtrip_case(&case.program, &case.config)
+}
+
+/// The round trip of `program` under `config`.
+pub(crate) fn gcode_roundtrip_case(program: &[u8], config: &Config) -> Result<(), String> {
     let engines: [&dyn Engine; 2] = [&SpecEngine, &ImplEngine::default()];
     for engine in engines {
-        let trace = engine.expand(&case.program, &case.config);
+        let trace = engine.expand(program, config);
         let text = trace.to_gcode();
-        let context = || format!("engine {}, program:\n{}\nG-code:\n{text}", engine.name(), case.text());
+        let context = || format!("engine {}, program:\n{}\nG-code:\n{text}", engine.name(), String::from_utf8_lossy(program));
         let (grid, motions) = readback::read(text.as_bytes()).map_err(|e| format!("{e}\n{}", context()))?;
         if grid != trace.grid {
             return Err(format!("grid {grid:?} read back as {:?}\n{}", trace.grid, context()));
@@ -189,81 +159,9 @@ pub fn gcode_roundtrip(data: &[u8]) -> Result<(), String> {
     Ok(())
 }
 
-/// The built-in seed corpus of `target` (file name, bytes), committed under
-/// `fuzz/corpus/<target>/` (`cyclecheck fuzz --write-seeds`): every program of the built-in
-/// corpus (the manuals' examples and one program per feature) — as raw bytes for
-/// `parse_blocks`, as literal [`CycleInput`]s under its configuration for the structured
-/// targets — and, for the structured targets, the plain input of each family and a few
-/// fixed-seed random ones, so the fuzzer starts from every family and harness.
-pub fn seeds(target: Target) -> Vec<(String, Vec<u8>)> {
-    let mut out = Vec::new();
-    let mut rng = 0x5eed_f022_u64;
-    let mut random_bytes = |n: usize| -> Vec<u8> {
-        (0..n)
-            .map(|_| {
-                rng ^= rng << 13;
-                rng ^= rng >> 7;
-                rng ^= rng << 17;
-                (rng >> 24) as u8
-            })
-            .collect()
-    };
-    for p in crate::corpus::PROGRAMS {
-        let bytes = match target {
-            Target::ParseBlocks => p.text.as_bytes().to_vec(),
-            Target::DiffSpecImpl | Target::GcodeRoundtrip => CycleInput::literal_bytes(p.text.as_bytes(), &p.config()),
-            Target::ImplInvariants => continue,
-        };
-        out.push((format!("{}.nc", p.name), bytes));
-    }
-    match target {
-        Target::ParseBlocks => {}
-        Target::DiffSpecImpl | Target::GcodeRoundtrip => {
-            for (name, first) in [("g76_g78_f76", 0u8), ("g92", 7), ("soup", 11), ("mutant", 12), ("g162", 16), ("g32_g33_g34", 18)] {
-                out.push((format!("{name}_plain"), vec![first]));
-                for i in 0..6 {
-                    let mut bytes = vec![first];
-                    bytes.extend(random_bytes(4 * crate::gen::KNOBS));
-                    out.push((format!("{name}_random_{i}"), bytes));
-                }
-            }
-        }
-        Target::ImplInvariants => {
-            // The first draw picks the harness: mode byte 0 (uniform), then the index.
-            // Harness 5 has a second draw: 0 trace depths, 1 and 2 the G162 harnesses.
-            for (name, head) in [("harness_0", &[0u8, 0][..]), ("harness_1", &[0, 1]), ("harness_2", &[0, 2]), ("harness_3", &[0, 3]),
-                ("harness_4", &[0, 4]), ("harness_5", &[0, 5]), ("g162_split", &[0, 5, 0, 1]), ("g162_pitch", &[0, 5, 0, 2])]
-            {
-                out.push((format!("{name}_plain"), head.to_vec()));
-                for i in 0..4 {
-                    let mut bytes = head.to_vec();
-                    bytes.extend(random_bytes(400));
-                    out.push((format!("{name}_random_{i}"), bytes));
-                }
-            }
-        }
-    }
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn seeds_pass_and_reach_every_harness_and_family() {
-        for t in Target::ALL {
-            let seeds = seeds(t);
-            assert!(seeds.len() >= 20, "{}: {} seeds", t.name(), seeds.len());
-            for (name, bytes) in &seeds {
-                t.run(bytes).unwrap_or_else(|e| panic!("{} seed {name}: {e}", t.name()));
-            }
-        }
-        let families: std::collections::BTreeSet<_> =
-            seeds(Target::DiffSpecImpl).iter().map(|(_, b)| CycleInput::from_bytes(b).case().family).collect();
-        let expected = ["f76", "g162", "g76", "g78", "g92", "literal", "mutant", "soup", "thread"];
-        assert_eq!(families.into_iter().collect::<Vec<_>>(), expected);
-    }
 
     #[test]
     fn names_round_trip() {
@@ -275,7 +173,8 @@ mod tests {
 
     #[test]
     fn every_target_passes_on_empty_and_small_inputs() {
-        for t in Target::ALL {
+        assert!(Target::ImplInvariants.run(b"").unwrap_err().contains("cycle_proofs::invariants"));
+        for t in Target::PROGRAMS {
             for data in [&b""[..], b"G0 X65 Z5\nG92 X58.7 Z-28 F3\n", &[0xff; 64], &[7; 300]] {
                 t.run(data).unwrap_or_else(|e| panic!("{}: {e}", t.name()));
             }

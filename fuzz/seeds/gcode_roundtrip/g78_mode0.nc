@@ -1,0 +1,5 @@
+(G78 infeed mode 0: centre line, degressive depth)
+G00 X40 Z5;
+G78 P010060 Q0.08 R0.05 D1;
+G78 X27.4 Z-20 P1.3 Q0.4 F2 J1 K1;
+M30;

@@ -1,0 +1,6 @@
+(G76.EXAMPLE, GSK enhanced G76: m 2, r 05, a 45, dmin 0.15, d 0.5, k 3, dd 1.8)
+G00 X80 Z10;
+G76 P020545 Q0.15 R0.5;
+G76 X60 Z-60 P3 Q1.8 F300 J1.5 K2;
+G00 X80 Z10;
+M30;

@@ -1,0 +1,6 @@
+(G76 inch thread, 16 threads per inch; run with --units inch)
+G20;
+G00 X1.2 Z0.2;
+G76 P011060 Q0.002 R0.001;
+G76 X0.9 Z-1 P0.04 Q0.012 I16;
+M30;

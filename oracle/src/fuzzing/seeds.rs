@@ -1,0 +1,145 @@
+//! The built-in seeds of the program targets, decoded (`fuzz/seeds/<target>/`, written by
+//! `cyclecheck fuzz --write-seeds`), and their encoding as libFuzzer inputs
+//! (`fuzz/corpus/<target>/`, not committed).
+//!
+//! The seeds: every program of the built-in corpus (the manuals' examples and one program per
+//! feature) under its configuration and, for the structured targets, the plain case of each
+//! generator family and a few built from fixed-seed random knobs, so the fuzzer starts from
+//! every family.
+
+use super::decoded::{Origin, ProgramCase};
+use super::replay::{built, case_for};
+use super::{CycleInput, Target};
+use crate::gen::{self, Family, KNOBS};
+
+/// The families seeded, by seed name.
+const FAMILIES: [(&str, Family); 6] = [
+    ("g76_g78_f76", Family::Multipass),
+    ("g92", Family::G92),
+    ("soup", Family::Soup),
+    ("mutant", Family::Mutant),
+    ("g162", Family::G162),
+    ("g32_g33_g34", Family::ThreadMoves),
+];
+
+fn origin(target: Target, what: String) -> Origin {
+    Origin { target: target.name().to_string(), found_by: format!("built-in seed: {what}"), date: None }
+}
+
+/// The built-in seeds of a program target, decoded: (name, program, case). Empty for
+/// `impl_invariants` (its seeds are `cycle_proofs::invariants::seeds`).
+pub fn seeds(target: Target) -> Vec<(String, Vec<u8>, ProgramCase)> {
+    let mut out = Vec::new();
+    if target == Target::ImplInvariants {
+        return out;
+    }
+    for p in crate::corpus::PROGRAMS {
+        let config = (target != Target::ParseBlocks).then(|| p.config());
+        let origin = origin(target, format!("corpus program {}", p.name));
+        out.extend(case_for(target, p.text.as_bytes(), config, origin, None).map(|c| (p.name.to_string(), p.text.as_bytes().to_vec(), c)));
+    }
+    if target == Target::ParseBlocks {
+        return out;
+    }
+    let mut rng = 0x5eed_f022_u64;
+    for (name, family) in FAMILIES {
+        let mut add = |seed: String, knobs: Vec<u32>| {
+            let case = gen::build(family, &knobs);
+            let origin = origin(target, format!("family {name}, {seed}"));
+            let c = case_for(target, &case.program, Some(case.config), origin, Some(built(family, &knobs)));
+            out.extend(c.map(|c| (format!("{name}_{seed}"), case.program, c)));
+        };
+        add("plain".to_string(), Vec::new());
+        for i in 0..6 {
+            let knobs = (0..KNOBS)
+                .map(|_| {
+                    rng ^= rng << 13;
+                    rng ^= rng >> 7;
+                    rng ^= rng << 17;
+                    (rng >> 16) as u32
+                })
+                .collect();
+            add(format!("random_{i}"), knobs);
+        }
+    }
+    out
+}
+
+/// The libFuzzer input of a decoded program case: the program itself for `parse_blocks`; for
+/// the structured targets the generator's input when its family and knobs still build exactly
+/// this program and configuration, else a literal input when its configuration fits one.
+pub fn encode(target: Target, program: &[u8], case: &ProgramCase) -> Result<Vec<u8>, String> {
+    let config = match (target, case.config) {
+        (Target::ParseBlocks, _) => return Ok(program.to_vec()),
+        (Target::ImplInvariants, _) => return Err("impl_invariants cases are encoded by cycle-proofs".to_string()),
+        (_, None) => return Err(format!("{} needs a configuration", target.name())),
+        (_, Some(c)) => c,
+    };
+    let same = |bytes: &[u8]| {
+        let c = CycleInput::from_bytes(bytes).case();
+        c.program == program && c.config == config
+    };
+    if let Some(b) = &case.built {
+        // The first byte that selects the family, then each knob as four bytes.
+        let first = (0..=u8::MAX).find(|&x| {
+            matches!(CycleInput::from_bytes(&[x]), CycleInput::Built { family, .. } if built(family, &[]).family == b.family)
+        });
+        if let Some(first) = first {
+            let mut bytes = vec![first];
+            bytes.extend(b.knobs.iter().flat_map(|k| k.to_le_bytes()));
+            if same(&bytes) {
+                return Ok(bytes);
+            }
+        }
+    }
+    let literal = CycleInput::literal_bytes(program, &config);
+    if same(&literal) {
+        return Ok(literal);
+    }
+    Err(format!(
+        "no {} input encodes this case: its generator no longer builds it, and a literal input cannot carry its configuration {}",
+        target.name(),
+        serde_json::to_string(&config).unwrap_or_default()
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::fuzzing::replay::replay;
+    use cycle_vocab::Config;
+
+    #[test]
+    fn seeds_pass_encode_to_themselves_and_reach_every_family() {
+        for t in [Target::ParseBlocks, Target::DiffSpecImpl, Target::GcodeRoundtrip] {
+            let seeds = seeds(t);
+            assert!(seeds.len() >= 20, "{}: {} seeds", t.name(), seeds.len());
+            for (name, program, case) in &seeds {
+                replay(t, program, case).unwrap_or_else(|e| panic!("{} seed {name}: {e}", t.name()));
+                let bytes = encode(t, program, case).unwrap_or_else(|e| panic!("{} seed {name}: {e}", t.name()));
+                if t != Target::ParseBlocks {
+                    let c = CycleInput::from_bytes(&bytes).case();
+                    assert_eq!((&c.program, Some(c.config)), (program, case.config), "{name}");
+                    // Family seeds keep their structure: mutating a knob changes one decision.
+                    assert_eq!(case.built.is_some(), matches!(CycleInput::from_bytes(&bytes), CycleInput::Built { .. }), "{name}");
+                }
+            }
+        }
+        let families: std::collections::BTreeSet<_> = seeds(Target::DiffSpecImpl)
+            .iter()
+            .map(|(_, p, c)| if c.built.is_some() { CycleInput::from_bytes(&encode(Target::DiffSpecImpl, p, c).unwrap()).case().family } else { "literal" })
+            .collect();
+        let expected = ["f76", "g162", "g76", "g78", "g92", "literal", "mutant", "soup", "thread"];
+        assert_eq!(families.into_iter().collect::<Vec<_>>(), expected);
+    }
+
+    #[test]
+    fn a_configuration_no_input_carries_is_refused() {
+        let mut config = Config::default();
+        config.params.max_passes = Some(3);
+        let (_, _, mut case) = seeds(Target::DiffSpecImpl).remove(0);
+        case.config = Some(config);
+        case.built = None;
+        assert!(encode(Target::DiffSpecImpl, b"G0 X1\n", &case).unwrap_err().contains("\"max_passes\":3"));
+    }
+}
