@@ -22,6 +22,10 @@ pub struct Params {
     pub p5145_depth_mode: u32,
     pub max_passes: u32,
     pub x_radius: u32,
+    pub p5132_rough_depth: i64,
+    pub p5133_rough_retract: i64,
+    pub arc_tolerance: i64,
+    pub nose_radius: i64,
 }
 
 /// The defaults this controller ships with.
@@ -39,6 +43,10 @@ pub const DEFAULTS: Params = Params {
     p5145_depth_mode: 1,
     max_passes: 10_000,
     x_radius: 0,
+    p5132_rough_depth: 1_000,
+    p5133_rough_retract: 500,
+    arc_tolerance: 10,
+    nose_radius: 0,
 };
 
 fn out(word: Option<u8>, rule: Rule) -> Alarm {
@@ -56,8 +64,13 @@ fn small(set: Option<i64>, default: u32, lo: u32, hi: u32, rule: Rule) -> Result
 
 /// A length parameter: the value set, else `default`, within 0…N.
 fn length(set: Option<i64>, default: i64, rule: Rule) -> Result<i64, Alarm> {
+    length_from(set, default, 0, rule)
+}
+
+/// A length parameter: the value set, else `default`, within `lo`…N.
+fn length_from(set: Option<i64>, default: i64, lo: i64, rule: Rule) -> Result<i64, Alarm> {
     let v = set.unwrap_or(default);
-    if (0..=MAX_LENGTH).contains(&v) {
+    if (lo..=MAX_LENGTH).contains(&v) {
         Ok(v)
     } else {
         Err(out(None, rule))
@@ -65,8 +78,8 @@ fn length(set: Option<i64>, default: i64, rule: Rule) -> Result<i64, Alarm> {
 }
 
 /// COM.RANGES, G92.JK.1, G92.JK.8, G92.HOLD, G76.PULLOUT, G76.DEFAULTS, G78.MODE,
-/// G78.DEPTHMODE, PRJ.MAXPASS, F76.FORMAT, NC201.XMODE: the configuration, in the register's
-/// order; the parameters in force when it is legal.
+/// G78.DEPTHMODE, PRJ.MAXPASS, F76.FORMAT, NC201.XMODE, G71.PARAM, ARC.TOL, TNRC.RADIUS: the
+/// configuration, in the register's order; the parameters in force when it is legal.
 pub fn check(c: &Config) -> Result<Params, Alarm> {
     let p = &c.params;
     let d = DEFAULTS;
@@ -90,11 +103,19 @@ pub fn check(c: &Config) -> Result<Params, Alarm> {
         p5145_depth_mode: small(p.p5145_depth_mode, d.p5145_depth_mode, 0, 1, Rule::G78DepthMode)?,
         max_passes: small(p.max_passes, d.max_passes, 1, 1_000_000, Rule::PrjMaxPass)?,
         x_radius: d.x_radius,
+        p5132_rough_depth: d.p5132_rough_depth,
+        p5133_rough_retract: d.p5133_rough_retract,
+        arc_tolerance: d.arc_tolerance,
+        nose_radius: d.nose_radius,
     };
     if c.dialect == Dialect::Fanuc && !FANUC_ANGLES.contains(&params.p5143_tool_angle) {
         return Err(out(None, Rule::F76Format));
     }
     // Checked under every dialect, read only under nc201.
     let x_radius = small(p.x_radius, d.x_radius, 0, 1, Rule::Nc201XMode)?;
-    Ok(Params { x_radius, ..params })
+    let p5132_rough_depth = length_from(p.p5132_rough_depth, d.p5132_rough_depth, 1, Rule::G71Param)?;
+    let p5133_rough_retract = length(p.p5133_rough_retract, d.p5133_rough_retract, Rule::G71Param)?;
+    let arc_tolerance = length(p.arc_tolerance, d.arc_tolerance, Rule::ArcTol)?;
+    let nose_radius = length(p.nose_radius, d.nose_radius, Rule::TnrcRadius)?;
+    Ok(Params { x_radius, p5132_rough_depth, p5133_rough_retract, arc_tolerance, nose_radius, ..params })
 }

@@ -26,12 +26,18 @@ pub struct Params {
     pub p5145_depth_mode: i64,
     pub max_passes: i64,
     pub x_radius: i64,
+    pub p5132_rough_depth: i64,
+    pub p5133_rough_retract: i64,
+    pub arc_tolerance: i64,
+    pub nose_radius: i64,
 }
 
 /// The defaults of docs/INTERPRETATION.md, "Parameters and defaults": No.19 one lead (G92.JK.1),
 /// No.107 0 (G92.JK.8), No.0018 bit 6 0, 5130 one lead and 5131 45° (G76.PULLOUT), 5140 and 5141
 /// 100 increments, 5142 one finishing pass, 5143 60° (G76.DEFAULTS), 5144 centre infeed (G78.MODE),
-/// 5145 degressive (G78.DEPTHMODE), 10 000 cuts (PRJ.MAXPASS), X as diameters (NC201.XMODE).
+/// 5145 degressive (G78.DEPTHMODE), 10 000 cuts (PRJ.MAXPASS), X as diameters (NC201.XMODE),
+/// 5132 a depth of cut of 1 000 and 5133 a retract of 500 increments (G71.PARAM), an arc end
+/// within 10 increments of its circle (ARC.TOL), no nose radius (TNRC.RADIUS).
 pub const DEFAULTS: Params = Params {
     no19_pullout: 10,
     no107_pullout_speed: 0,
@@ -46,6 +52,10 @@ pub const DEFAULTS: Params = Params {
     p5145_depth_mode: 1,
     max_passes: 10_000,
     x_radius: 0,
+    p5132_rough_depth: 1_000,
+    p5133_rough_retract: 500,
+    arc_tolerance: 10,
+    nose_radius: 0,
 };
 
 /// The parameters of `config`: each set value, else its default.
@@ -66,6 +76,10 @@ pub fn params(config: &Config) -> Params {
         p5145_depth_mode: set.p5145_depth_mode.unwrap_or(d.p5145_depth_mode),
         max_passes: set.max_passes.unwrap_or(d.max_passes),
         x_radius: set.x_radius.unwrap_or(d.x_radius),
+        p5132_rough_depth: set.p5132_rough_depth.unwrap_or(d.p5132_rough_depth),
+        p5133_rough_retract: set.p5133_rough_retract.unwrap_or(d.p5133_rough_retract),
+        arc_tolerance: set.arc_tolerance.unwrap_or(d.arc_tolerance),
+        nose_radius: set.nose_radius.unwrap_or(d.nose_radius),
     }
 }
 
@@ -86,6 +100,10 @@ impl Params {
             p5145_depth_mode: Some(self.p5145_depth_mode),
             max_passes: Some(self.max_passes),
             x_radius: Some(self.x_radius),
+            p5132_rough_depth: Some(self.p5132_rough_depth),
+            p5133_rough_retract: Some(self.p5133_rough_retract),
+            arc_tolerance: Some(self.arc_tolerance),
+            nose_radius: Some(self.nose_radius),
         }
     }
 }
@@ -102,8 +120,9 @@ fn within(v: i64, lo: i64, hi: i64, word: Option<u8>, rule: Rule) -> Result<(), 
 /// Checks, in this order: the start point (|X|, |Z| ≤ N: COM.RANGES, word X / Z), No.19
 /// (G92.JK.1), No.0018 bit 6 (G92.HOLD), 5130 and 5131 (G76.PULLOUT), 5140, 5141, 5142, 5143
 /// (G76.DEFAULTS), 5144 (G78.MODE), 5145 (G78.DEPTHMODE), `max_passes` (PRJ.MAXPASS), under
-/// `fanuc` 5143 ∈ {80, 60, 55, 30, 29, 0} (F76.FORMAT), and `x_radius` ≤ 1 (NC201.XMODE, every
-/// dialect). An illegal value is `OUT OF RANGE` on line 0 (the configuration). No.107 is legal in
+/// `fanuc` 5143 ∈ {80, 60, 55, 30, 29, 0} (F76.FORMAT), `x_radius` ≤ 1 (NC201.XMODE, every
+/// dialect), 5132 in 1…N and 5133 in 0…N (G71.PARAM), `arc_tolerance` in 0…N (ARC.TOL),
+/// `nose_radius` in 0…N (TNRC.RADIUS). An illegal value is `OUT OF RANGE` on line 0 (the configuration). No.107 is legal in
 /// any value up to 999 999; a value other than 0 is refused when a G92 cycle runs (G92.JK.8).
 pub fn check(config: &Config) -> Result<(), Alarm> {
     let p = params(config);
@@ -125,5 +144,9 @@ pub fn check(config: &Config) -> Result<(), Alarm> {
         return Err(Alarm::new(AlarmCode::OutOfRange, None, Rule::F76Format, 0));
     }
     within(p.x_radius, 0, 1, None, Rule::Nc201XMode)?;
+    within(p.p5132_rough_depth, 1, N, None, Rule::G71Param)?;
+    within(p.p5133_rough_retract, 0, N, None, Rule::G71Param)?;
+    within(p.arc_tolerance, 0, N, None, Rule::ArcTol)?;
+    within(p.nose_radius, 0, N, None, Rule::TnrcRadius)?;
     Ok(())
 }

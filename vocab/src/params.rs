@@ -74,6 +74,10 @@ params! {
     p5145_depth_mode => "5145": "5145: G78 depth mode.",
     max_passes => "max_passes": "PRJ.MAXPASS: the most thread cuts (passes × starts) one cycle may make.",
     x_radius => "x_radius": "NC201.XMODE: under `nc201`, X and W words are 0 = diameters, 1 = radii.",
+    p5132_rough_depth => "5132": "5132: G71/G72 depth of cut Δd not yet given, increments (G71.PARAM).",
+    p5133_rough_retract => "5133": "5133: G71/G72 retract e not yet given, increments (G71.PARAM).",
+    arc_tolerance => "arc_tolerance": "ARC.TOL: how far an arc's end may lie off its circle, increments (radius).",
+    nose_radius => "nose_radius": "TNRC.RADIUS: the tool nose radius, increments; only 0 is modelled.",
 }
 
 /// A `--param` name that is not one of [`Params::NAMES`].
