@@ -119,7 +119,7 @@ fn summary(run: &Run, out: &mut String) {
         run.conforming(),
         run.diverging(),
         run.failures(),
-        escape(&run.options.cycles.iter().copied().collect::<Vec<_>>().join(", ")),
+        escape(&run.options.cycles.iter().map(|f| f.name).collect::<Vec<_>>().join(", ")),
         run.options.cases,
         run.options.seed,
         escape(
@@ -134,11 +134,13 @@ fn summary(run: &Run, out: &mut String) {
         fingerprint(RULES_MD),
         fingerprint(INTERPRETATION_MD),
     );
-    out.push_str("<table><tr><th>cycle</th><th>cases</th><th>conform</th><th>diverge</th><th>fail</th></tr>\n");
+    out.push_str("<table><tr><th>cycle run</th><th>counts the cases where</th><th>cases</th><th>conform</th><th>diverge</th><th>fail</th></tr>\n");
     for (cycle, [n, ok, div, fail]) in run.by_cycle() {
         let _ = writeln!(
             out,
-            r#"<tr><td>{cycle}</td><td class="num">{n}</td><td class="num">{ok}</td><td class="num">{div}</td><td class="num">{fail}</td></tr>"#
+            r#"<tr><td>{}</td><td>{}</td><td class="num">{n}</td><td class="num">{ok}</td><td class="num">{div}</td><td class="num">{fail}</td></tr>"#,
+            escape(cycle.label()),
+            escape(&cycle.describe())
         );
     }
     out.push_str("</table>\n");
