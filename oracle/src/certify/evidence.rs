@@ -115,6 +115,7 @@ fn matrix_json(rows: &[Row]) -> Value {
             }
             json!({
                 "id": r.id,
+                "family": r.group.name(),
                 "source": r.source,
                 "text": r.text,
                 "status": r.status,

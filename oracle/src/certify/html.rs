@@ -24,6 +24,7 @@ code { font-size: 12px; }
 .r-pass { color: #2e7d32; } .r-fail { color: #c62828; font-weight: bold; } .r-none { color: #888; }
 .matrix { table-layout: fixed; width: 100%; }
 .matrix td { font-size: 12px; overflow-wrap: anywhere; }
+.matrix tr.group th { background: #e4e9f2; font-size: 13px; }
 .matrix col.id { width: 8%; } .matrix col.src { width: 5%; } .matrix col.text { width: 17%; } .matrix col.status { width: 6%; }
 .matrix col.cites { width: 9.5%; } .matrix col.result { width: 7%; }
 .cite { font-family: monospace; font-size: 10.5px; margin-bottom: 2px; }
@@ -74,7 +75,11 @@ fn matrix(rows: &[Row], out: &mut String) {
         let _ = write!(out, "<th>{}</th>", k.name());
     }
     out.push_str("<th>result in this run</th></tr>\n");
-    for r in rows {
+    let columns = 5 + Kind::ALL.len();
+    for (i, r) in rows.iter().enumerate() {
+        if i == 0 || rows[i - 1].group != r.group {
+            let _ = writeln!(out, r#"<tr class="group"><th colspan="{columns}">{}</th></tr>"#, escape(&r.group.label()));
+        }
         let _ = write!(
             out,
             r#"<tr id="rule-{id}"><td><b>{id}</b></td><td>{src}</td><td class="text">{text}</td><td>{status}</td>"#,
@@ -231,7 +236,7 @@ pub fn page(run: &Run, rows: &[Row], plots: &[(String, String, String, String)])
     let implemented = rows.iter().filter(|r| r.implemented).count();
     let _ = writeln!(
         out,
-        "<h2 id=\"matrix\">Traceability matrix</h2>\n<p>{} catalogue rules ({} implemented). Each row: the spec code that states the rule, the production code that implements it, the tests, proofs and fuzz targets that cite it (found in the sources at build time), and the result in this run — how many cases' reference traces carry the rule's tag, and whether a divergence names it.</p>",
+        "<h2 id=\"matrix\">Traceability matrix</h2>\n<p>{} catalogue rules ({} implemented), grouped under headings: each cycle family's own rules, then the rules common to every family, then those of cycles not in the tool yet. Each row: the spec code that states the rule, the production code that implements it, the tests, proofs and fuzz targets that cite it (found in the sources at build time), and the result in this run — how many cases' reference traces carry the rule's tag, and whether a divergence names it.</p>",
         rows.len(),
         implemented
     );
