@@ -119,8 +119,11 @@ class Block:
 
 
 def blocks(src):
-    """Yields the blocks of a program; raises the first lexical alarm where it occurs."""
+    """Yields the blocks of a program; raises the first lexical alarm where it occurs. A UTF-8
+    byte-order mark at the very start is skipped (PRJ.LEX)."""
     pos, line, n = 0, 1, len(src)
+    if src.startswith(b"\xef\xbb\xbf"):
+        pos = 3
 
     def number(letter):
         nonlocal pos

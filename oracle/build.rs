@@ -13,7 +13,7 @@
 //! | spec | `spec/src` |
 //! | impl | `impl/src` |
 //! | shared | `vocab/src` (the lexer, word values and trace both engines use; not the ID list `rule.rs`) |
-//! | test | `tests/`, `#[cfg(test)]` modules and `tests.rs` files, `oracle/src/corpus.rs`, `oracle/src/gen.rs`, `oracle/tests`, `proofs/tests` |
+//! | test | `tests/`, `#[cfg(test)]` modules and `tests.rs` files, `oracle/src/corpus.rs`, `oracle/src/gen/`, `oracle/tests`, `proofs/tests` |
 //! | proof | `proofs/src` |
 //! | fuzz | `fuzz/fuzz_targets`, `oracle/src/fuzzing` |
 
@@ -27,7 +27,7 @@ const ROOTS: &[(&str, &str)] = &[
     ("impl/src", "Impl"),
     ("vocab/src", "Shared"),
     ("oracle/src/corpus.rs", "Test"),
-    ("oracle/src/gen.rs", "Test"),
+    ("oracle/src/gen", "Test"),
     ("oracle/src/fuzzing", "Fuzz"),
     ("oracle/tests", "Test"),
     ("tests", "Test"),

@@ -9,7 +9,8 @@
 use crate::conformance::{self, alarm_short, Divergence};
 use crate::engine::Engine;
 use cycle_vocab::text::Trace;
-use cycle_vocab::{Alarm, Blocks, Config, Dialect, Event};
+use crate::registry::{self, CycleRun};
+use cycle_vocab::{Alarm, Config, Event};
 use std::collections::BTreeMap;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
@@ -47,8 +48,8 @@ impl Verdict {
 #[derive(Clone, Debug)]
 pub struct Outcome {
     pub name: String,
-    /// The cycle the program exercises (see [`cycle_of`]).
-    pub cycle: &'static str,
+    /// The cycle the program runs ([`registry::cycle_run`]).
+    pub cycle: CycleRun,
     /// Events and pass headers of the reference trace.
     pub events: usize,
     pub passes: usize,
@@ -84,8 +85,8 @@ pub struct Report {
     pub engines: (String, String),
     /// Every case, in order.
     pub outcomes: Vec<Outcome>,
-    /// Cases per cycle (`G92`, `G76`, `G76 fanuc`, `G78`, `none`).
-    pub by_cycle: BTreeMap<&'static str, usize>,
+    /// Cases per cycle run.
+    pub by_cycle: BTreeMap<CycleRun, usize>,
     /// Cases per ending of the reference trace: `clean` or `alarm 2002 P G78.MODE`.
     pub by_ending: BTreeMap<String, usize>,
     /// The cases that diverged or panicked.
@@ -124,35 +125,11 @@ impl Report {
             self.conforming(),
             self.cases() - self.conforming()
         );
-        let join = |m: Vec<(String, usize)>| m.into_iter().map(|(k, v)| format!("{k} {v}")).collect::<Vec<_>>().join(", ");
-        s.push_str(&format!(
-            "\n  by cycle: {}",
-            join(self.by_cycle.iter().map(|(k, v)| (k.to_string(), *v)).collect())
-        ));
-        s.push_str(&format!("\n  by ending: {}", join(self.by_ending.iter().map(|(k, v)| (k.clone(), *v)).collect())));
+        s.push_str(&format!("\n  by cycle: {}", registry::counts_line(&self.by_cycle)));
+        let endings: Vec<String> = self.by_ending.iter().map(|(k, v)| format!("{k} {v}")).collect();
+        s.push_str(&format!("\n  by ending: {}", endings.join(", ")));
         s
     }
-}
-
-/// The cycle a program exercises: the first cycle code (G92, G76, G78) of its blocks, read
-/// with the shared lexer up to its first lexical alarm; `none` when there is none.
-pub fn cycle_of(program: &[u8], config: &Config) -> &'static str {
-    for block in Blocks::new(program) {
-        let Ok(block) = block else { break };
-        for g in block.g_codes() {
-            if g.point || g.negative {
-                continue;
-            }
-            match (g.mantissa, config.dialect) {
-                (92, _) => return "G92",
-                (76, Dialect::Fanuc) => return "G76 fanuc",
-                (76, Dialect::Gsk) => return "G76",
-                (78, _) => return "G78",
-                _ => {}
-            }
-        }
-    }
-    "none"
 }
 
 fn panic_message(p: Box<dyn std::any::Any + Send>) -> String {
@@ -187,8 +164,8 @@ pub fn judge(engines: (&dyn Engine, &dyn Engine), program: &[u8], config: &Confi
 pub fn run(engines: (&dyn Engine, &dyn Engine), cases: impl Iterator<Item = (String, Vec<u8>, Config)>) -> Report {
     let mut report = Report { engines: (engines.0.name().to_string(), engines.1.name().to_string()), ..Report::default() };
     for (name, program, config) in cases {
-        let cycle = cycle_of(&program, &config);
         let (reference, verdict) = judge(engines, &program, &config);
+        let cycle = registry::cycle_run(&program, &config, reference.as_ref());
         let (events, passes) = reference.as_ref().map_or((0, 0), |t| {
             (t.events.len(), t.events.iter().filter(|e| matches!(e, Event::Pass(_))).count())
         });
@@ -225,10 +202,12 @@ mod tests {
         assert!(r.all_conform(), "{}", r.summary());
         assert_eq!(r.conforming(), r.cases());
         assert_eq!(r.by_ending.get("alarm 2002 P G78.MODE"), Some(&1), "{}", r.summary());
-        assert_eq!(r.by_cycle.get("G78"), Some(&7), "{}", r.summary());
-        assert_eq!(r.by_cycle.get("G76 fanuc"), Some(&1), "{}", r.summary());
+        let family = |name| CycleRun::Family(registry::find(name).unwrap());
+        assert_eq!(r.by_cycle.get(&family("g78")), Some(&7), "{}", r.summary());
+        assert_eq!(r.by_cycle.get(&family("f76")), Some(&1), "{}", r.summary());
+        assert!(r.outcomes.iter().all(|o| matches!(o.cycle, CycleRun::Family(_))), "{}", r.summary());
         let g92 = r.outcomes.iter().find(|o| o.name == "g92_example").unwrap();
-        assert_eq!((g92.cycle, g92.passes), ("G92", 4));
+        assert_eq!((g92.cycle, g92.passes), (family("g92"), 4));
         assert_eq!(g92.verdict.short(), "conform");
         let g78 = r.outcomes.iter().find(|o| o.name == "g78_example").unwrap();
         assert_eq!(g78.verdict.short(), "conform (alarm 2002 P G78.MODE)");
@@ -253,14 +232,5 @@ mod tests {
         assert_eq!(r.findings.len(), 1);
         assert!(matches!(&r.findings[0].verdict, Verdict::Panic { engine, message } if engine == "panics" && message == "boom"));
         assert_eq!(r.outcomes[0].verdict.short(), "PANIC (panics)");
-    }
-
-    #[test]
-    fn cycles_are_named() {
-        let c = Config::default();
-        assert_eq!(cycle_of(b"G0 X1\nG92 X1 Z-1 F1", &c), "G92");
-        assert_eq!(cycle_of(b"G76 P1", &Config { dialect: Dialect::Fanuc, ..c }), "G76 fanuc");
-        assert_eq!(cycle_of(b"G78", &c), "G78");
-        assert_eq!(cycle_of(b"G0 X1 #G92", &c), "none");
     }
 }

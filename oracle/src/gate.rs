@@ -4,8 +4,8 @@
 //!
 //! 1. `corpus`: every built-in program (the manuals' examples, one program per feature)
 //!    through spec and impl; all must conform;
-//! 2. `campaign`: a fixed-seed differential campaign over every generator family
-//!    (`crate::gen::any_case`), `cases` cases, spec vs impl by the conformance relation;
+//! 2. `campaign`: a fixed-seed differential campaign over every registry family's
+//!    generator and garbage (`crate::gen::any_case`), `cases` cases, spec vs impl by the conformance relation;
 //! 3. `fuzz replay`: the committed decoded seeds and regression cases (`fuzz/seeds/`,
 //!    `tests/fuzz_regressions/`) of the program fuzz targets through their bodies, each case's
 //!    expected verdict checked (`crate::fuzzing::replay`); the `impl_invariants` cases are read
@@ -91,7 +91,8 @@ fn findings_text(report: &campaign::Report) -> String {
 pub fn corpus_step() -> Step {
     step("corpus", || {
         let r = campaign::run((&SpecEngine, &ImplEngine::default()), corpus::cases());
-        (r.all_conform(), format!("{} programs, {} conform", r.cases(), r.conforming()), findings_text(&r))
+        let summary = format!("{} programs, {} conform; by cycle: {}", r.cases(), r.conforming(), crate::registry::counts_line(&r.by_cycle));
+        (r.all_conform(), summary, findings_text(&r))
     })
 }
 
@@ -107,7 +108,13 @@ pub fn campaign_step(cases: u32, seed: u64) -> Step {
         });
         let r = campaign::run((&SpecEngine, &ImplEngine::default()), cases);
         let panics = r.findings.iter().filter(|f| matches!(f.verdict, Verdict::Panic { .. })).count();
-        let summary = format!("seed {seed:#x}: {} cases, {} conform, {} panics", r.cases(), r.conforming(), panics);
+        let summary = format!(
+            "seed {seed:#x}: {} cases, {} conform, {} panics; by cycle: {}",
+            r.cases(),
+            r.conforming(),
+            panics,
+            crate::registry::counts_line(&r.by_cycle)
+        );
         (r.all_conform() && r.cases() > 0, summary, findings_text(&r))
     })
 }

@@ -1,8 +1,8 @@
 //! The oracle of the lathe canned-cycle reference: the engines behind one trait
 //! ([`engine`]), the conformance relation and trace diff ([`conformance`]), the rule catalogue as
-//! data ([`catalogue`]), the built-in corpus of the manuals' programs ([`corpus`]), proptest
-//! generators of programs and configurations ([`gen`]), and differential campaigns
-//! ([`campaign`]). The `cyclecheck` binary is a thin CLI over these.
+//! data ([`catalogue`]), the cycle families ([`registry`]), the built-in corpus of the manuals'
+//! programs ([`corpus`]), proptest generators of programs and configurations ([`gen`]), and
+//! differential campaigns ([`campaign`]). The `cyclecheck` binary is a thin CLI over these.
 //!
 //! ```
 //! use cycle_oracle::engine::{Engine, SpecEngine};
@@ -25,6 +25,7 @@ pub mod gate;
 pub mod gen;
 pub mod nightly;
 pub mod readback;
+pub mod registry;
 
 pub use conformance::{check, Divergence, DivergenceKind};
 pub use engine::{Engine, ImplEngine, SpecEngine};

@@ -1,15 +1,18 @@
 //! A reader of canonical expanded G-code (the format `cycle_vocab::text` prints and the README
-//! documents): the header comment, then one motion per block, `G00 X Z`, `G01 X Z F` or
-//! `G32 X Z F [Q] [K [J]] [R]`; pass and alarm comments are passed over.
+//! documents): the header comment, then one motion per block, `G00 X Z`, `G01 X Z F`,
+//! `G32 X Z F [Q] [K [J]] [R]` or `G02`/`G03 X Z I K F` (I, K the absolute centre); pass and alarm
+//! comments are passed over.
 //!
 //! It reads the printed form back into motions on the integer grid, so a vendor's expander that
 //! prints G-code can be compared motion by motion, and so the printer is checked by a round
-//! trip (`crate::fuzzing`, target `gcode_roundtrip`). Blocks are split by the shared lexer
-//! (`cycle_vocab::Blocks`, PRJ.LEX); everything else in a block is an error naming its line and
+//! trip (`crate::fuzzing`, target `gcode_roundtrip`). Blocks are split by the reference's lexer
+//! (`cycle_spec::lex`, PRJ.LEX); everything else in a block is an error naming its line and
 //! word: the format has one form of each motion.
 
+use cycle_spec::lex::{Block, Blocks, Number};
 use cycle_vocab::text::fixed;
-use cycle_vocab::{Blocks, Grid, Increment, Move, MoveKind, Number, Units};
+use cycle_vocab::{Grid, Increment, Move, MoveKind, Units};
+use num_traits::ToPrimitive;
 
 /// One motion as the canonical form prints it (the rule tag is not printed).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -20,6 +23,9 @@ pub struct Motion {
     pub z: i64,
     /// Feed or lead, lead counts (0 for a rapid).
     pub feed: i64,
+    /// An arc's absolute centre, X (diameter) and Z, increments (0, 0 for other motions).
+    pub cx: i64,
+    pub cz: i64,
     /// Start angle, 0.001° (thread moves).
     pub angle: u32,
     /// Lead change per `lead_change_angle`, lead counts (thread moves).
@@ -30,18 +36,12 @@ pub struct Motion {
     pub lead_floor: i64,
 }
 
+/// Every field of the move but its rule tag (not printed); a field added to `Move` does not
+/// compile here until the canonical form prints and reads it.
 impl From<&Move> for Motion {
     fn from(m: &Move) -> Motion {
-        Motion {
-            kind: m.kind,
-            x: m.x,
-            z: m.z,
-            feed: m.feed,
-            angle: m.angle,
-            lead_change: m.lead_change,
-            lead_change_angle: m.lead_change_angle,
-            lead_floor: m.lead_floor,
-        }
+        let Move { kind, x, z, feed, cx, cz, angle, lead_change, lead_change_angle, lead_floor, rule: _ } = *m;
+        Motion { kind, x, z, feed, cx, cz, angle, lead_change, lead_change_angle, lead_floor }
     }
 }
 
@@ -72,16 +72,20 @@ pub fn read(text: &[u8]) -> Result<(Grid, Vec<Motion>), String> {
     Ok((grid, motions))
 }
 
-fn motion(block: &cycle_vocab::Block, grid: Grid) -> Result<Motion, String> {
+fn motion(block: &Block, grid: Grid) -> Result<Motion, String> {
     let line = block.line;
     let msg = |word: char, what: &str| format!("line {line}: word {word}: {what}");
     let err = |word: char, what: &str| Err(msg(word, what));
-    let kind = match block.g_codes() {
-        [g] if !g.point && !g.negative && g.mantissa == 0 && g.decimals == 0 => MoveKind::Rapid,
-        [g] if !g.point && !g.negative && g.mantissa == 1 => MoveKind::Feed,
-        [g] if !g.point && !g.negative && g.mantissa == 32 => MoveKind::Thread,
+    // A G code as its value: `G00` and `G0` alike, no point, no sign.
+    let codes: Vec<String> = block.g_codes().map(|g| g.to_string()).collect();
+    let kind = match codes.iter().map(String::as_str).collect::<Vec<_>>()[..] {
+        ["0"] => MoveKind::Rapid,
+        ["1"] => MoveKind::Feed,
+        ["32"] => MoveKind::Thread,
+        ["2"] => MoveKind::ArcCw,
+        ["3"] => MoveKind::ArcCcw,
         [] => return err('G', "missing"),
-        _ => return err('G', "not one of G00, G01, G32"),
+        _ => return err('G', "not one of G00, G01, G02, G03, G32"),
     };
     let allowed: &[u8] = match kind {
         MoveKind::Rapid => b"XZ",
@@ -89,7 +93,7 @@ fn motion(block: &cycle_vocab::Block, grid: Grid) -> Result<Motion, String> {
         MoveKind::Thread => b"XZFQKJR",
         MoveKind::ArcCw | MoveKind::ArcCcw => b"XZIKF",
     };
-    if let Some(l) = block.letters().find(|l| !allowed.contains(l)) {
+    if let Some(l) = block.letters().into_iter().find(|l| !allowed.contains(l)) {
         return err(l as char, "not part of this motion's canonical form");
     }
     let value = |letter: u8, places: u32| -> Result<Option<i64>, String> {
@@ -105,11 +109,15 @@ fn motion(block: &cycle_vocab::Block, grid: Grid) -> Result<Motion, String> {
     let x = required(b'X', dec)?;
     let z = required(b'Z', dec)?;
     let feed = if kind == MoveKind::Rapid { 0 } else { required(b'F', lead_dec)? };
+    if matches!(kind, MoveKind::ArcCw | MoveKind::ArcCcw) {
+        let (cx, cz) = (required(b'I', dec)?, required(b'K', dec)?);
+        return Ok(Motion { kind, x, z, feed, cx, cz, angle: 0, lead_change: 0, lead_change_angle: 0, lead_floor: 0 });
+    }
     let count = |letter: u8| -> Result<Option<u32>, String> {
         match block.get(letter) {
             None => Ok(None),
             Some(n) if n.point || n.negative => Err(msg(letter as char, "not a non-negative integer")),
-            Some(n) => u32::try_from(n.mantissa).map(Some).map_err(|_| msg(letter as char, "too large")),
+            Some(n) => n.mantissa().to_u32().map(Some).ok_or_else(|| msg(letter as char, "too large")),
         }
     };
     let angle = count(b'Q')?.unwrap_or(0);
@@ -121,15 +129,15 @@ fn motion(block: &cycle_vocab::Block, grid: Grid) -> Result<Motion, String> {
         (_, j) => j.unwrap_or(360_000),
     };
     let lead_floor = value(b'R', lead_dec)?.unwrap_or(0);
-    Ok(Motion { kind, x, z, feed, angle, lead_change, lead_change_angle, lead_floor })
+    Ok(Motion { kind, x, z, feed, cx: 0, cz: 0, angle, lead_change, lead_change_angle, lead_floor })
 }
 
 /// A printed value with exactly `places` decimals (the canonical form prints every digit).
-fn exact(n: Number, places: u32) -> Result<i64, String> {
-    if !n.point || u32::from(n.decimals) != places {
+fn exact(n: &Number, places: u32) -> Result<i64, String> {
+    if !n.point || n.decimals != places {
         return Err(format!("not printed with exactly {places} decimals"));
     }
-    n.scaled(places).map_err(|e| format!("{e:?}"))
+    n.mantissa().to_i64().ok_or_else(|| "too large".to_string())
 }
 
 #[cfg(test)]
@@ -158,6 +166,8 @@ mod tests {
             x: 100_000,
             z: -50_000,
             feed: 10_000,
+            cx: 0,
+            cz: 0,
             angle: 180_000,
             lead_change: -5,
             lead_change_angle: 360_000,
@@ -165,6 +175,12 @@ mod tests {
         };
         let second = Motion { z: -90_000, angle: 0, lead_change_angle: 90_000, lead_floor: 5, ..first };
         assert_eq!(m, vec![first, second]);
+        // Arcs: the absolute centre as I (X, diameter) and K.
+        let arc = cycle_vocab::Move::arc(true, 29_000, -47_848, 32_000, -40_500, 1_000_000, cycle_vocab::Rule::ArcR);
+        let line = cycle_vocab::text::Trace::event_line(Grid::METRIC_ISB, &cycle_vocab::Event::Move(arc));
+        assert_eq!(line, "G02 X29.000 Z-47.848 I32.000 K-40.500 F100.0000");
+        let (_, m) = read(format!("{}\n{line}\n", header(Grid::METRIC_ISB)).as_bytes()).unwrap();
+        assert_eq!(m, vec![Motion::from(&arc)]);
         let printed = cycle_vocab::text::Trace {
             grid: inch,
             events: vec![cycle_vocab::Event::Move(cycle_vocab::Move::variable_thread(
@@ -189,7 +205,9 @@ mod tests {
             ("G00 X1.000 Z1.000 F1.0000", "word F"),
             ("G01 X1.000 Z1.000", "word F: missing"),
             ("G00 X1 Z1.000", "word X: not printed with exactly 3 decimals"),
-            ("G02 X1.000 Z1.000", "word G"),
+            ("G04 X1.000 Z1.000", "word G"),
+            ("G02 X1.000 Z1.000 I1.000 K1.000", "word F: missing"),
+            ("G03 X1.000 Z1.000 I1.000 F1.0000", "word K: missing"),
             ("X1.000 Z1.000", "word G: missing"),
             ("G32 X1.000 Z1.000 F1.0000 Q1.5", "word Q"),
             ("G32 X1.000 Z1.000 F1.0000 J90000", "word J: printed without K"),

@@ -1,5 +1,8 @@
 //! Performance of the production expander (issue: performance, measured against the limit).
 //!
+//! The cases: each registry family's bench case (`cycle_oracle::registry`) at 1, 100 and 9 900
+//! passes (thread blocks for G32), and two G76 extremes.
+//!
 //! For each case, four measurements over the same trace, all reported as events per second
 //! (criterion throughput in elements = events):
 //! - `baseline`: writes the case's events, already computed, one by one into a preallocated
@@ -17,7 +20,8 @@
 
 use criterion::{black_box, BenchmarkId, Criterion, Throughput};
 use cycle_impl::Expander;
-use cycle_vocab::{Config, Event};
+use cycle_oracle::registry::{BENCH_SIZES, FAMILIES};
+use cycle_vocab::{Config, Event, MoveKind};
 use std::time::{Duration, Instant};
 
 /// One benchmark case: a program, its configuration, and the figures measured for it.
@@ -25,28 +29,6 @@ struct Case {
     name: String,
     program: String,
     config: Config,
-}
-
-/// G92 with `n` modal repeats (one pass each, G92.MODAL).
-fn g92(n: usize) -> Case {
-    let mut p = String::from("G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\n");
-    for i in 1..n {
-        let x = 58_700 - (i % 500) as i64; // increments, 0.001 mm
-        p.push_str(&format!("X{}.{:03}\n", x / 1000, x % 1000));
-    }
-    Case { name: format!("g92/{n}_passes"), program: p, config: Config::default() }
-}
-
-/// G76 with Δdmin = 0 and Δd = 10 increments: about (T/10)² rough passes for T = k − d.
-fn g76(target_passes: u32) -> Case {
-    let t = (10.0 * (target_passes as f64).sqrt()).round() as i64; // radius increments
-    let k = t + 100; // d = 0.1 mm
-    let p = format!(
-        "G0 X40 Z5\nG76 P011060 Q0 R0.1\nG76 X27.4 Z-20 P{}.{:03} Q0.01 F2\n",
-        k / 1000,
-        k % 1000
-    );
-    Case { name: format!("g76/{target_passes}_target"), program: p, config: Config::default() }
 }
 
 /// G76 with a minimum cut that is never reached (Δd = 0.2, Δdmin = 0.001: the switch of
@@ -59,17 +41,6 @@ fn g76_min_cut_unreached() -> Case {
     Case { name: "g76/9900_min_cut_unreached".into(), program: p.into(), config: Config::default() }
 }
 
-/// G78 constant depth (mode 3, depth mode 0): T/Δd rough passes, Δd = 1 increment.
-fn g78(passes: i64) -> Case {
-    let k = passes + 50;
-    let p = format!(
-        "G0 X60 Z5\nG78 P010360 Q0 R0.05 D0\nG78 X27.4 Z-20 P{}.{:03} Q0.001 F2\n",
-        k / 1000,
-        k % 1000
-    );
-    Case { name: format!("g78/{passes}_passes"), program: p, config: Config::default() }
-}
-
 /// The hardest legal inputs: the largest lengths of the grid, multi-start, a Δd = Δdmin tie,
 /// a steep taper, 99 spring passes, seven starts: 9 086 thread cuts, near the bound.
 fn extreme() -> Case {
@@ -78,15 +49,16 @@ fn extreme() -> Case {
     Case { name: "g76/extreme_ranges".into(), program: p.into(), config: Config::default() }
 }
 
+/// Each registry family's bench case at each size (`g92/100`, `g76/9900`, …), then the extremes.
 fn cases() -> Vec<Case> {
-    let mut v = vec![g92(1), g92(100), g92(10_000)];
-    for n in [1, 10, 100, 1_000, 9_900] {
-        v.push(g76(n));
+    let mut v = Vec::new();
+    for family in FAMILIES {
+        for n in BENCH_SIZES {
+            let case = (family.bench)(n);
+            v.push(Case { name: format!("{}/{n}", family.name), program: case.text(), config: case.config });
+        }
     }
     v.push(g76_min_cut_unreached());
-    for n in [1, 100, 9_900] {
-        v.push(g78(n));
-    }
     v.push(extreme());
     v
 }
@@ -127,15 +99,15 @@ fn iter_into(buffer: &mut Vec<Event>, case: &Case) {
 }
 
 /// The latency: the production expander from the start of the program to the cycle's first
-/// move (the first move after a pass header) — every block read and checked, the cycle's
-/// checks and its pass-count bound done. The rapid of the program's first block comes before
-/// the cycle and does not count.
+/// move (the first move after a pass header, or the first thread move of thread blocks, which
+/// have no pass headers) — every block read and checked, the cycle's checks and its pass-count
+/// bound done. The rapid of the program's first block comes before the cycle and does not count.
 fn first_cycle_move(case: &Case) -> Option<Event> {
     let mut in_cycle = false;
     for item in Expander::new(case.program.as_bytes(), case.config) {
         match item {
             Ok(Event::Pass(_)) => in_cycle = true,
-            Ok(e @ Event::Move(_)) if in_cycle => return Some(e),
+            Ok(e @ Event::Move(m)) if in_cycle || m.kind == MoveKind::Thread => return Some(e),
             Ok(Event::Move(_)) => {}
             Err(_) => return None,
         }

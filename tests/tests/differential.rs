@@ -2,17 +2,14 @@
 //! reference (`cycle-spec`) on generated programs, judged by the exact conformance relation
 //! (`cycle_oracle::conformance::check`: equal traces field by field, rule tags aside).
 //!
-//! One campaign per generator family of `cycle_oracle::gen`:
-//! - G92 programs (valid and invalid, modal repeats, J/K combinations, multi-start, grids);
-//! - G76 / G78 / FANUC G76 two-block programs (modes, depth schedules and their ties, tapers,
-//!   internal threads, lead-in, pull-outs, the pass bound);
-//! - G162 programs under `nc201` (M004: depth split, infeed angle, leg, taper, variable pitch,
-//!   G90/G91, X radius or diameter, every cycle check);
-//! - G32 / G33 / G34 thread-move programs (M003: start angles, lead changes, modal repeats);
-//! - garbage (random bytes, word soup, corpus mutants): the same alarm, never a panic.
+//! One campaign per cycle family of `cycle_oracle::registry` (a test module each, `g92::conforms`,
+//! …: the family's generator in `cycle_oracle::gen`, every program spelled in the forms the lexer
+//! promises), and one of garbage (random bytes, word soup, corpus mutants): the same alarm,
+//! never a panic. The completeness test (`families.rs`) requires the list of family campaigns to
+//! equal the registry.
 //!
-//! Cases per campaign: `CYCLECHECK_CASES` (default 10 000 for G92, G76/G78, G162 and the thread
-//! moves, a fifth of it for garbage); RNG seed: `CYCLECHECK_SEED` (a u64; a fixed default, so runs repeat). A failure
+//! Cases per campaign: `CYCLECHECK_CASES` (default 10 000 per family, a fifth of it for
+//! garbage); RNG seed: `CYCLECHECK_SEED` (a u64; a fixed default, so runs repeat). A failure
 //! is shrunk to a minimal program, then reported as the divergence (kind, event, field, both
 //! values as canonical G-code, the rule and its catalogue text, context) and the program text.
 
@@ -21,6 +18,7 @@ use cycle_oracle::conformance;
 use cycle_oracle::corpus;
 use cycle_oracle::engine::{Engine, ImplEngine, SpecEngine};
 use cycle_oracle::gen::{self, Case};
+use cycle_oracle::registry;
 use proptest::strategy::Strategy;
 use proptest::test_runner::{Config as ProptestConfig, RngAlgorithm, TestCaseError, TestError, TestRng, TestRunner};
 
@@ -68,29 +66,29 @@ fn campaign(name: &str, strategy: impl Strategy<Value = Case>, default: u32) {
     }
 }
 
-#[test]
-fn g92_programs_conform() {
-    campaign("G92", gen::g92(), 10_000);
+/// A test module per family, `<family>::conforms`, each the family's campaign.
+macro_rules! family_campaigns {
+    ($($family:ident),* $(,)?) => {$(
+        mod $family {
+            #[test]
+            fn conforms() {
+                super::family_campaign(stringify!($family));
+            }
+        }
+    )*};
 }
 
-#[test]
-fn g76_g78_programs_conform() {
-    campaign("G76/G78", gen::multipass(), 10_000);
-}
+family_campaigns!(g92, g76, g78, f76, g162, g32, g90, g94);
 
-#[test]
-fn g162_programs_conform() {
-    campaign("G162", gen::g162(), 10_000);
-}
-
-#[test]
-fn g32_g33_g34_programs_conform() {
-    campaign("G32/G33/G34", gen::thread_moves(), 10_000);
+/// The campaign of the registry family `name`.
+fn family_campaign(name: &str) {
+    let family = registry::find(name).unwrap_or_else(|| panic!("{name} is no registry family"));
+    campaign(family.display, family.strategy(), 10_000);
 }
 
 #[test]
 fn garbage_gets_the_same_alarm() {
-    campaign("garbage", gen::garbage(), cases(10_000).div_ceil(5));
+    campaign("garbage", gen::garbage::strategy(), cases(10_000).div_ceil(5));
 }
 
 /// The built-in corpus (what `cyclecheck corpus` runs), through the campaign runner.

@@ -1,12 +1,14 @@
-//! The manuals' examples and one program per feature, expanded by the reference spec and
-//! snapshotted as canonical G-code (insta), with the production expander checked against the
-//! spec by the conformance relation on each. Rule IDs: G92.EXAMPLE, G76.EXAMPLE, G78.EXAMPLE,
-//! F76.EX1, F76.EX2, F76.MICRONS, COM.MULTISTART, G76.MODE, G78.MODE, G78.DEPTHMODE, COM.UNITS,
-//! G162.* (G162.SPLIT: the manual's P2.5 Q1 sequence), G32, G33, G34.
+//! The manuals' examples and one program per feature (`cycle_oracle::corpus`), expanded by the
+//! reference spec and snapshotted as canonical G-code (insta) in the folder of the family each
+//! runs (`snapshots/<family>/`, `cycle_oracle::registry::cycle_run`), with the production
+//! expander checked against the spec by the conformance relation on each. Rule IDs:
+//! G92.EXAMPLE, G76.EXAMPLE, G78.EXAMPLE, F76.EX1, F76.EX2, F76.MICRONS, COM.MULTISTART,
+//! G76.MODE, G78.MODE, G78.DEPTHMODE, COM.UNITS, G162.* (G162.SPLIT: the manual's P2.5 Q1
+//! sequence), G32, G33, G34.
 
-use cycle_oracle::conformance;
+use cycle_oracle::{conformance, corpus, registry};
 use cycle_vocab::text::Trace;
-use cycle_vocab::{AlarmCode, Config, Dialect, Event, Grid, Increment, MoveKind, PassKind, Rule, Units};
+use cycle_vocab::{AlarmCode, Config, Dialect, Event, MoveKind, PassKind, Rule};
 
 fn gsk() -> Config {
     Config::default()
@@ -14,14 +16,6 @@ fn gsk() -> Config {
 
 fn fanuc() -> Config {
     Config { dialect: Dialect::Fanuc, ..Config::default() }
-}
-
-fn nc201() -> Config {
-    Config { dialect: Dialect::Nc201, ..Config::default() }
-}
-
-fn inch() -> Config {
-    Config { grid: Grid { units: Units::Inch, increment: Increment::Isb }, ..Config::default() }
 }
 
 /// Expands with both engines, requires them to conform, and returns the spec's trace.
@@ -34,62 +28,25 @@ fn expand_both(name: &str, program: &str, config: Config) -> Trace {
     spec
 }
 
-macro_rules! snapshot {
-    ($test:ident, $path:literal, $config:expr) => {
-        #[test]
-        fn $test() {
-            let program = include_str!($path);
-            let trace = expand_both(stringify!($test), program, $config);
-            insta::with_settings!({ description => program, omit_expression => true }, {
-                insta::assert_snapshot!(stringify!($test), trace.to_gcode());
+/// Every built-in program matches its snapshot, `snapshots/<family>/examples__<name>.snap`; every
+/// program is checked before the test fails, naming those that differ.
+#[test]
+fn every_program_matches_its_snapshot() {
+    let mut differ = Vec::new();
+    for p in corpus::PROGRAMS {
+        let trace = expand_both(p.name, p.text, p.config());
+        let folder = registry::cycle_run(p.text.as_bytes(), &p.config(), Some(&trace)).name();
+        let checked = std::panic::catch_unwind(|| {
+            insta::with_settings!({ snapshot_path => format!("snapshots/{folder}"), description => p.text, omit_expression => true }, {
+                insta::assert_snapshot!(p.name, trace.to_gcode());
             });
+        });
+        if checked.is_err() {
+            differ.push(format!("{folder}/{}", p.name));
         }
-    };
+    }
+    assert!(differ.is_empty(), "snapshots missing or changed: {differ:?}");
 }
-
-// The manuals' examples (corpus/).
-snapshot!(g92_example, "../../corpus/g92_example.nc", gsk());
-snapshot!(g76_example, "../../corpus/g76_example.nc", gsk());
-snapshot!(g78_example, "../../corpus/g78_example.nc", gsk());
-snapshot!(f76_ex1, "../../corpus/f76_ex1.nc", gsk());
-snapshot!(f76_ex1_microns, "../../corpus/f76_ex1_microns.nc", fanuc());
-snapshot!(f76_ex2, "../../corpus/f76_ex2.nc", gsk());
-
-// One program per feature (tests/programs/).
-snapshot!(g92_taper, "../programs/g92_taper.nc", gsk());
-snapshot!(g92_internal, "../programs/g92_internal.nc", gsk());
-snapshot!(g92_inch, "../programs/g92_inch.nc", inch());
-snapshot!(g92_multistart, "../programs/g92_multistart.nc", gsk());
-snapshot!(g92_modal_pullout, "../programs/g92_modal_pullout.nc", gsk());
-snapshot!(g76_taper, "../programs/g76_taper.nc", gsk());
-snapshot!(g76_internal, "../programs/g76_internal.nc", gsk());
-snapshot!(g76_inch, "../programs/g76_inch.nc", inch());
-snapshot!(g76_multistart, "../programs/g76_multistart.nc", gsk());
-snapshot!(g76_mode0, "../programs/g76_mode0.nc", gsk());
-snapshot!(g76_mode1, "../programs/g76_mode1.nc", gsk());
-snapshot!(g76_mode2, "../programs/g76_mode2.nc", gsk());
-snapshot!(g78_mode0, "../programs/g78_mode0.nc", gsk());
-snapshot!(g78_mode1, "../programs/g78_mode1.nc", gsk());
-snapshot!(g78_mode2, "../programs/g78_mode2.nc", gsk());
-snapshot!(g78_mode3, "../programs/g78_mode3.nc", gsk());
-snapshot!(g78_mode4, "../programs/g78_mode4.nc", gsk());
-snapshot!(g78_constant, "../programs/g78_constant.nc", gsk());
-
-// G162 (M004, nc201): the manual's cone, a straight, a taper, a multi-start, a variable-pitch
-// and an internal G91 thread; the thread moves G32/G33/G34 (M003).
-snapshot!(g162_cone, "../../corpus/g162_cone.nc", nc201());
-snapshot!(g90_example, "../../corpus/g90_example.nc", gsk());
-snapshot!(g94_example, "../../corpus/g94_example.nc", gsk());
-snapshot!(g162_straight, "../programs/g162_straight.nc", nc201());
-snapshot!(g162_taper, "../programs/g162_taper.nc", nc201());
-snapshot!(g162_multistart, "../programs/g162_multistart.nc", nc201());
-snapshot!(g162_variable, "../programs/g162_variable.nc", nc201());
-snapshot!(g162_internal_g91, "../programs/g162_internal_g91.nc", nc201());
-snapshot!(g32_g33_g34, "../programs/g32_g33_g34.nc", gsk());
-snapshot!(g90_taper_signs, "../programs/g90_taper_signs.nc", gsk());
-snapshot!(g90_modal_runs, "../programs/g90_modal_runs.nc", gsk());
-snapshot!(g90_inch, "../programs/g90_inch.nc", inch());
-snapshot!(g94_taper, "../programs/g94_taper.nc", gsk());
 
 /// Thread cuts (the first synchronized move after each pass header): (X, Z) of its end.
 fn cuts(trace: &Trace) -> Vec<(PassKind, i64, i64)> {

@@ -1,6 +1,5 @@
-(G92 taper thread, R and U of the same sign, explicit J/K pull-out)
-G00 X50 Z5;
-G92 X40 Z-30 R-2 F2 J1 K1;
-X39.4;
-X032;
+(G78 infeed mode 1: left flank, degressive depth)
+G00 X40 Z5;
+G78 P010160Q0.08 R0.05 D1;
+G78 X27.4 Z-20 P1.3 Q0.4 F2 J1 K1;
 M30;

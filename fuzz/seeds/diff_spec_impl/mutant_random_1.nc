@@ -1,4 +1,4 @@
-(G162 straight external thread, manual split P2.5 Q1: 1, 2, 2.25, 2.375, 2.438, 2.5 on ISB; --dialect nc201)
-G0 X30 Z5
-G16J2 XŸ4 Z-30 H400 P2.5 Q1\ V2 F2
+(G162 taper: W = +2 mm on diameter over the thread, infeed angle A29.5, F1.96 as the manual's cone examle; --dialect nc201)
+G0 X40 Z3
+G162 X30 Z-50 H300 P1.2 Q0.4 V1.5 W2 A29.5 F1.96
 M30

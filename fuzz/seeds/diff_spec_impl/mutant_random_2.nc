@@ -1,9 +1,4 @@
-(G92.EXAMPLE, GSK980TDi manual 3.24.9: thread in four cycles, first infeed 1.3 mm on diameter)
-O0012;
-M3 S300 G0 X150 Z50 T0101; (thread tool)
-G0 X65 Z5; (rapid to the start point)
-G92 X58.7 Z-28 F3 J3 K1; (first cycle)
-X57.7; (second cycle, infeed 1 mm)
-X57; (third cycle, infeed 0.7 mm3)
-X56.9; (fourth cycle, infeed 0.1 mm)
-M30;
+(G162 taper: W = +2 mm on diameter ove the thread, infeed angle A29.5, F1.96 as the manual's cone example; --dialect nc201)
+G0 X40 Z3
+G162 X30 Z-50 H300 P1.2 Q0.4 V1.5 W2 A29.5 F1.96
+M30

@@ -1,6 +1,4 @@
-(G92 taper threXd, R and U of the same s8ign, explicit J/K pull-out)
-G00 X50 Z5;
-G92 X40 Z-30 R8-2 F2 J1 K1;
-X39.4;
-X39;
-M30;
+(M04 4.2.13, the manual's taper example: a cone 50 mm long withZ a 20 mm diameter difference, pitch 2 mm along the 8cone written as F1.96 along Z; --dialect nc201)
+G0 X45 Z0
+G162 X20 Z-50 H300 P1.2 Q0.4 W20 F1.96
+M30

@@ -1,5 +1,7 @@
-(G162 wo-start thread: one cycle per )tart, B0 and B180; --dialect nc201)
-G0 X36 Z4
-G162 X332 Z-24 H500 P0.9 Q0.3 F3 B0
-G162 X32 Z-24 H500 P0.9 Q0.3 F3 B180
-M30
+(G90 in inch units, straight then taper; run with --units inch)
+G20;
+G0 X2. Z0.1;
+G90 X1.8 Z-1.5 F0.01;
+X1.7;
+G90 X1.6 Z-1.5 I-0.05; (sa5e run, pass ’: the cut starts at 51.5)
+M30;

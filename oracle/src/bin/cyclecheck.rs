@@ -13,12 +13,16 @@ use cycle_oracle::certify::{self, CaseResult};
 use cycle_oracle::conformance::{self, alarm_summary};
 use cycle_oracle::corpus;
 use cycle_oracle::engine::{self, FailureKind, ImplEngine, SpecEngine};
+use cycle_oracle::registry;
 use cycle_spec::words::N as MAX_LENGTH;
 use cycle_vocab::text::Trace;
 use cycle_vocab::{Config, Dialect, Grid, Increment, Units};
 use std::process::ExitCode;
 
-const USAGE: &str = "\
+/// The help text; the cycle names and certify's defaults come from the registry and certify.
+fn usage() -> String {
+    format!(
+        "\
 usage:
   cyclecheck expand FILE [--engine spec|impl] [--format gcode|json] [OPTIONS]
   cyclecheck diff FILE... [--candidate CMD] [--format gcode|json] [OPTIONS]
@@ -43,10 +47,15 @@ candidate options (diff, certify; docs/CANDIDATE.md):
   --max-output BYTES        longest answer line per case (default 67108864)
 certify options:
   --out DIR                 where the bundle goes (default evidence)
-  --cycles LIST             all (default) or a comma list of g92, g76, g78, f76, g162, g32
-  --cases N                 generated cases per family (default 500; garbage gets a fifth)
-  --seed S                  seed of the generated campaign (default 6912920065418837504)
-exit: 0 ok / conform, 1 the engines diverge or the candidate fails, 2 an alarm or bad input";
+  --cycles LIST             all (default) or a comma list of {cycles}
+  --cases N                 generated cases per family (default {cases}; garbage gets a fifth)
+  --seed S                  seed of the generated campaign (default {seed})
+exit: 0 ok / conform, 1 the engines diverge or the candidate fails, 2 an alarm or bad input",
+        cycles = registry::names(),
+        cases = certify::DEFAULT_CASES,
+        seed = certify::DEFAULT_SEED,
+    )
+}
 
 /// `writeln!` into the output buffer (a `String` cannot fail).
 macro_rules! outln {
@@ -119,12 +128,12 @@ fn main() -> ExitCode {
 
 fn run(args: &[String]) -> Result<u8, Bad> {
     let Some(command) = args.first() else {
-        return bad(format!("no command\n{USAGE}"));
+        return bad(format!("no command\n{}", usage()));
     };
     let rest = &args[1..];
     match command.as_str() {
         "-h" | "--help" | "help" => {
-            emit(&format!("{USAGE}\n"));
+            emit(&format!("{}\n", usage()));
             Ok(0)
         }
         "expand" => expand(parse(rest, true)?),
@@ -133,7 +142,7 @@ fn run(args: &[String]) -> Result<u8, Bad> {
         "certify" => certify_command(rest),
         "gate" => cycle_oracle::gate::command(rest).map_err(Bad),
         "fuzz" => cycle_oracle::nightly::command(rest).map_err(Bad),
-        other => bad(format!("unknown command {other:?}\n{USAGE}")),
+        other => bad(format!("unknown command {other:?}\n{}", usage())),
     }
 }
 
@@ -171,10 +180,10 @@ fn parse(args: &[String], allow_engine: bool) -> Result<Options, Bad> {
         }
         let name = arg.split_once('=').map_or(arg.as_str(), |(n, _)| n);
         if name == "--help" {
-            return bad(USAGE);
+            return bad(usage());
         }
         if !OPTIONS.contains(&name) {
-            return bad(format!("unknown option {name:?}\n{USAGE}"));
+            return bad(format!("unknown option {name:?}\n{}", usage()));
         }
         let (name, value) = option_value(arg, &mut it)?;
         match name {
@@ -228,7 +237,7 @@ fn parse(args: &[String], allow_engine: bool) -> Result<Options, Bad> {
             }
             "--candidate" => o.candidate = Some(value.to_string()),
             "--timeout-ms" | "--max-output" => candidate_limit(&mut o.limits, name, value)?,
-            _ => return bad(format!("unknown option {name:?}\n{USAGE}")),
+            _ => return bad(format!("unknown option {name:?}\n{}", usage())),
         }
     }
     o.config.grid = Grid { units, increment };
@@ -296,7 +305,7 @@ fn read_program(file: &str) -> Result<Vec<u8>, Bad> {
 
 fn expand(o: Options) -> Result<u8, Bad> {
     let Some(file) = o.files.first() else {
-        return bad(format!("no FILE given\n{USAGE}"));
+        return bad(format!("no FILE given\n{}", usage()));
     };
     let program = read_program(file)?;
     let name = o.engine.as_deref().unwrap_or("spec");
@@ -324,7 +333,7 @@ fn report_alarm(trace: &Trace) -> u8 {
 
 fn diff(o: Options) -> Result<u8, Bad> {
     if o.files.is_empty() {
-        return bad(format!("no FILE given\n{USAGE}"));
+        return bad(format!("no FILE given\n{}", usage()));
     }
     let programs = o.files.iter().map(|f| read_program(f).map(|p| (f, p))).collect::<Result<Vec<_>, Bad>>()?;
     let certify_options = certify::Options { candidate: o.candidate.clone(), limits: o.limits, ..certify::Options::default() };
@@ -332,12 +341,15 @@ fn diff(o: Options) -> Result<u8, Bad> {
     let json = o.format.as_deref() == Some("json");
     let several = programs.len() > 1;
     let (mut diverged, mut alarmed) = (false, false);
+    let mut by_cycle = std::collections::BTreeMap::new();
     for (file, program) in &programs {
         let mut out = String::new();
-        if several && !json {
-            outln!(out, "== {file}");
-        }
         let (reference, _, result) = certify::judge(&SpecEngine, candidate.as_ref(), program, &o.config);
+        let cycle = registry::cycle_run(program, &o.config, reference.as_ref());
+        *by_cycle.entry(cycle).or_insert(0) += 1;
+        if several && !json {
+            outln!(out, "== {file} ({})", cycle.label());
+        }
         let mut doc = match &result {
             CaseResult::Diverge(d) => {
                 diverged = true;
@@ -375,12 +387,16 @@ fn diff(o: Options) -> Result<u8, Bad> {
             if several {
                 doc["file"] = serde_json::json!(file);
             }
+            doc["cycle"] = serde_json::json!(cycle.label());
             outln!(out, "{doc}");
         }
         emit(&out);
         if let (CaseResult::Conform, Some(trace)) = (&result, &reference) {
             alarmed |= report_alarm(trace) != 0;
         }
+    }
+    if several && !json {
+        emit(&format!("\n{} files by cycle: {}\n", programs.len(), registry::counts_line(&by_cycle)));
     }
     Ok(if diverged {
         1
@@ -399,7 +415,7 @@ fn certify_command(args: &[String]) -> Result<u8, Bad> {
     let mut it = args.iter();
     while let Some(arg) = it.next() {
         if !arg.starts_with("--") {
-            return bad(format!("certify takes options only, not {arg:?}\n{USAGE}"));
+            return bad(format!("certify takes options only, not {arg:?}\n{}", usage()));
         }
         let (name, value) = option_value(arg, &mut it)?;
         match name {
@@ -411,7 +427,7 @@ fn certify_command(args: &[String]) -> Result<u8, Bad> {
                 options.cases = value.trim().parse().map_err(|_| Bad(format!("--cases takes a whole number, not {value:?}")))?
             }
             "--seed" => options.seed = value.trim().parse().map_err(|_| Bad(format!("--seed takes a u64, not {value:?}")))?,
-            _ => return bad(format!("unknown certify option {name:?}\n{USAGE}")),
+            _ => return bad(format!("unknown certify option {name:?}\n{}", usage())),
         }
     }
     let mut bar = ProgressBar::new();
@@ -492,7 +508,7 @@ fn corpus_command(args: &[String]) -> Result<u8, Bad> {
             ("--format", "text") => json = false,
             ("--format", "json") => json = true,
             ("--format", v) => return bad(format!("--format of corpus takes text or json, not {v:?}")),
-            _ => return bad(format!("corpus takes only --format, not {arg:?}\n{USAGE}")),
+            _ => return bad(format!("corpus takes only --format, not {arg:?}\n{}", usage())),
         }
     }
     let (spec, imp) = (SpecEngine, ImplEngine::default());
@@ -515,6 +531,7 @@ fn corpus_command(args: &[String]) -> Result<u8, Bad> {
                 serde_json::json!({
                     "name": o.name,
                     "path": p.path,
+                    "cycle": o.cycle.label(),
                     "dialect": p.config().dialect,
                     "units": p.config().grid.units,
                     "rules": p.rules.iter().map(|r| r.id()).collect::<Vec<_>>(),
@@ -531,13 +548,20 @@ fn corpus_command(args: &[String]) -> Result<u8, Bad> {
             "reference": report.engines.0,
             "candidate": report.engines.1,
             "programs": programs,
-            "summary": {"programs": report.cases(), "conform": report.conforming(), "diverge": report.cases() - report.conforming()},
+            "summary": {
+                "programs": report.cases(),
+                "conform": report.conforming(),
+                "diverge": report.cases() - report.conforming(),
+                "by_cycle": report.by_cycle.iter().map(|(c, n)| (c.label(), *n)).collect::<std::collections::BTreeMap<_, _>>(),
+            },
         });
         outln!(out, "{}", serde_json::to_string_pretty(&doc).expect("JSON values serialize"));
     } else {
         let width = corpus::PROGRAMS.iter().map(|p| p.name.len()).max().unwrap_or(0);
+        let cycle_width = report.outcomes.iter().map(|o| o.cycle.label().len()).max().unwrap_or(0);
         for o in &report.outcomes {
-            outln!(out, "{:width$}  {:>6} events  {:>4} passes  {}", o.name, o.events, o.passes, o.verdict.short());
+            let (name, cycle) = (&o.name, o.cycle.label());
+            outln!(out, "{name:width$}  {cycle:cycle_width$}  {:>6} events  {:>4} passes  {}", o.events, o.passes, o.verdict.short());
         }
         for f in &report.findings {
             outln!(out, "\n{}: {}", f.name, corpus::find(&f.name).map_or("", |p| p.path));
@@ -547,13 +571,15 @@ fn corpus_command(args: &[String]) -> Result<u8, Bad> {
                 Verdict::Conform(_) => {}
             }
         }
-        outln!(out, 
-            "\n{} programs: {} conform, {} diverge ({} vs {})",
+        outln!(
+            out,
+            "\n{} programs: {} conform, {} diverge ({} vs {}); by cycle: {}",
             report.cases(),
             report.conforming(),
             report.cases() - report.conforming(),
             report.engines.0,
-            report.engines.1
+            report.engines.1,
+            registry::counts_line(&report.by_cycle)
         );
     }
     emit(&out);

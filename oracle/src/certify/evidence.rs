@@ -1,7 +1,7 @@
 //! `evidence.json`: the machine-readable record of a certification run (schema
 //! [`SCHEMA`], documented in the README): tool and protocol versions, fingerprints of the
 //! catalogue and the register compiled in, the candidate and its limits, parameters and seeds,
-//! counts per cycle, per rule and per configuration, every non-conforming case (program,
+//! counts per cycle run (each with what it counts), per rule and per configuration, every non-conforming case (program,
 //! configuration, divergence or failure), the divergence groups with their minimized inputs, and
 //! the traceability matrix.
 
@@ -65,7 +65,7 @@ fn case(r: &CaseRecord, group: Option<usize>) -> Value {
     let mut v = json!({
         "name": r.name,
         "origin": origin(&r.origin),
-        "cycle": r.cycle,
+        "cycle": r.cycle.label(),
         "events": r.events,
         "ending": r.ending,
         "rules": r.rules.iter().map(|r| r.id()).collect::<Vec<_>>(),
@@ -115,6 +115,7 @@ fn matrix_json(rows: &[Row]) -> Value {
             }
             json!({
                 "id": r.id,
+                "family": r.group.name(),
                 "source": r.source,
                 "text": r.text,
                 "status": r.status,
@@ -161,7 +162,10 @@ pub fn document(run: &Run, rows: &[Row]) -> Value {
     let by_cycle: BTreeMap<&str, Value> = run
         .by_cycle()
         .into_iter()
-        .map(|(c, [n, ok, div, fail])| (c, json!({ "cases": n, "conform": ok, "diverge": div, "fail": fail })))
+        .map(|(c, [n, ok, div, fail])| {
+            let counts = json!({ "name": c.name(), "counts": c.describe(), "cases": n, "conform": ok, "diverge": div, "fail": fail });
+            (c.label(), counts)
+        })
         .collect();
     let by_rule: BTreeMap<&str, Value> = run
         .by_rule()
@@ -185,7 +189,7 @@ pub fn document(run: &Run, rows: &[Row]) -> Value {
             "process_starts": run.candidate_argv.as_ref().map(|_| run.candidate_starts),
         },
         "parameters": {
-            "cycles": run.options.cycles.iter().collect::<Vec<_>>(),
+            "cycles": run.options.cycles.iter().map(|f| f.name).collect::<Vec<_>>(),
             "cases_per_family": run.options.cases,
             "seed": run.options.seed,
             "shrink_steps": SHRINK_STEPS,

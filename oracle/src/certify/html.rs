@@ -24,6 +24,7 @@ code { font-size: 12px; }
 .r-pass { color: #2e7d32; } .r-fail { color: #c62828; font-weight: bold; } .r-none { color: #888; }
 .matrix { table-layout: fixed; width: 100%; }
 .matrix td { font-size: 12px; overflow-wrap: anywhere; }
+.matrix tr.group th { background: #e4e9f2; font-size: 13px; }
 .matrix col.id { width: 8%; } .matrix col.src { width: 5%; } .matrix col.text { width: 17%; } .matrix col.status { width: 6%; }
 .matrix col.cites { width: 9.5%; } .matrix col.result { width: 7%; }
 .cite { font-family: monospace; font-size: 10.5px; margin-bottom: 2px; }
@@ -74,7 +75,11 @@ fn matrix(rows: &[Row], out: &mut String) {
         let _ = write!(out, "<th>{}</th>", k.name());
     }
     out.push_str("<th>result in this run</th></tr>\n");
-    for r in rows {
+    let columns = 5 + Kind::ALL.len();
+    for (i, r) in rows.iter().enumerate() {
+        if i == 0 || rows[i - 1].group != r.group {
+            let _ = writeln!(out, r#"<tr class="group"><th colspan="{columns}">{}</th></tr>"#, escape(&r.group.label()));
+        }
         let _ = write!(
             out,
             r#"<tr id="rule-{id}"><td><b>{id}</b></td><td>{src}</td><td class="text">{text}</td><td>{status}</td>"#,
@@ -119,7 +124,7 @@ fn summary(run: &Run, out: &mut String) {
         run.conforming(),
         run.diverging(),
         run.failures(),
-        escape(&run.options.cycles.iter().copied().collect::<Vec<_>>().join(", ")),
+        escape(&run.options.cycles.iter().map(|f| f.name).collect::<Vec<_>>().join(", ")),
         run.options.cases,
         run.options.seed,
         escape(
@@ -134,11 +139,13 @@ fn summary(run: &Run, out: &mut String) {
         fingerprint(RULES_MD),
         fingerprint(INTERPRETATION_MD),
     );
-    out.push_str("<table><tr><th>cycle</th><th>cases</th><th>conform</th><th>diverge</th><th>fail</th></tr>\n");
+    out.push_str("<table><tr><th>cycle run</th><th>counts the cases where</th><th>cases</th><th>conform</th><th>diverge</th><th>fail</th></tr>\n");
     for (cycle, [n, ok, div, fail]) in run.by_cycle() {
         let _ = writeln!(
             out,
-            r#"<tr><td>{cycle}</td><td class="num">{n}</td><td class="num">{ok}</td><td class="num">{div}</td><td class="num">{fail}</td></tr>"#
+            r#"<tr><td>{}</td><td>{}</td><td class="num">{n}</td><td class="num">{ok}</td><td class="num">{div}</td><td class="num">{fail}</td></tr>"#,
+            escape(cycle.label()),
+            escape(&cycle.describe())
         );
     }
     out.push_str("</table>\n");
@@ -229,7 +236,7 @@ pub fn page(run: &Run, rows: &[Row], plots: &[(String, String, String, String)])
     let implemented = rows.iter().filter(|r| r.implemented).count();
     let _ = writeln!(
         out,
-        "<h2 id=\"matrix\">Traceability matrix</h2>\n<p>{} catalogue rules ({} implemented). Each row: the spec code that states the rule, the production code that implements it, the tests, proofs and fuzz targets that cite it (found in the sources at build time), and the result in this run — how many cases' reference traces carry the rule's tag, and whether a divergence names it.</p>",
+        "<h2 id=\"matrix\">Traceability matrix</h2>\n<p>{} catalogue rules ({} implemented), grouped under headings: each cycle family's own rules, then the rules common to every family, then those of cycles not in the tool yet. Each row: the spec code that states the rule, the production code that implements it, the tests, proofs and fuzz targets that cite it (found in the sources at build time), and the result in this run — how many cases' reference traces carry the rule's tag, and whether a divergence names it.</p>",
         rows.len(),
         implemented
     );

@@ -1,12 +1,15 @@
 //! The traceability matrix: each rule of the catalogue (`docs/RULES.md`) → the spec code that
 //! states it, the production code that implements it, the tests, proofs and fuzz targets that
-//! check it, and its result in a run.
+//! check it, and its result in a run. Rows are grouped by cycle family
+//! ([`crate::registry::rule_group`]): each family's rules, then the rules common to all (COM,
+//! PRJ), then those of no family yet; catalogue order within a group.
 //!
 //! The citations are found at build time (`oracle/build.rs` scans the workspace for rule IDs
 //! and `Rule::` variants) and compiled in, so an installed `cyclecheck` needs no source tree.
 
 use super::Run;
 use crate::catalogue;
+use crate::registry::{self, RuleGroup};
 use cycle_vocab::Rule;
 use serde::Serialize;
 
@@ -90,9 +93,11 @@ impl Outcome {
 }
 
 /// One row of the matrix.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug)]
 pub struct Row {
     pub id: &'static str,
+    /// The family group the rule stands in.
+    pub group: RuleGroup,
     pub source: &'static str,
     pub text: &'static str,
     /// The catalogue's status column.
@@ -127,11 +132,11 @@ pub fn citations(rule: Rule) -> Vec<Citation> {
     c
 }
 
-/// The matrix: one row per catalogue rule, in catalogue order, with results from `run` (when
-/// given: otherwise every implemented rule is `NotExercised`).
+/// The matrix: one row per catalogue rule, by group, in catalogue order within a group, with
+/// results from `run` (when given: otherwise every implemented rule is `NotExercised`).
 pub fn rows(run: Option<&Run>) -> Vec<Row> {
     let by_rule = run.map(Run::by_rule).unwrap_or_default();
-    Rule::ALL
+    let mut rows: Vec<Row> = Rule::ALL
         .iter()
         .map(|&rule| {
             let entry = catalogue::entry(rule);
@@ -146,6 +151,7 @@ pub fn rows(run: Option<&Run>) -> Vec<Row> {
             };
             Row {
                 id: rule.id(),
+                group: registry::rule_group(rule),
                 source: entry.map_or("", |e| e.source),
                 text: entry.map_or("", |e| e.text),
                 status,
@@ -154,7 +160,9 @@ pub fn rows(run: Option<&Run>) -> Vec<Row> {
                 outcome,
             }
         })
-        .collect()
+        .collect();
+    rows.sort_by_key(|r| r.group);
+    rows
 }
 
 #[cfg(test)]
@@ -197,6 +205,18 @@ mod tests {
             assert!(c.line > 0 && !c.item.is_empty(), "{c:?}");
         }
         assert!(SCANNED.contains(&"spec/src") && SCANNED.contains(&"impl/src"), "{SCANNED:?}");
+    }
+
+    /// Rows come by group, families first in registry order, and each family has rules.
+    #[test]
+    fn rows_are_grouped_by_family() {
+        let rows = rows(None);
+        assert!(rows.windows(2).all(|w| w[0].group <= w[1].group));
+        for f in registry::FAMILIES {
+            assert!(rows.iter().any(|r| r.group == RuleGroup::Family(f)), "no rule of {}", f.name);
+        }
+        assert_eq!(rows[0].id, "G92.FORMAT");
+        assert!(rows.iter().any(|r| r.group == RuleGroup::Common && r.id == "PRJ.LEX"));
     }
 
     #[test]

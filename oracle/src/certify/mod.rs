@@ -1,71 +1,44 @@
 //! `cyclecheck certify`: the certification run and its evidence bundle.
 //!
 //! The run takes the built-in corpus (the manuals' examples and the feature programs,
-//! [`crate::corpus`]) and a fixed-seed generated campaign ([`crate::gen`]: G92, G76/G78/FANUC
-//! G76, garbage), runs each case through the reference spec and a candidate — the production
-//! expander, or a vendor's expander behind the candidate protocol ([`crate::candidate`]) — and
-//! judges each pair of traces with the conformance relation ([`crate::conformance`]).
+//! [`crate::corpus`]) and a fixed-seed generated campaign ([`cases`]: one generator per cycle
+//! family of [`crate::registry`], and garbage), runs each case through the reference spec and a
+//! candidate — the production expander, or a vendor's expander behind the candidate protocol
+//! ([`crate::candidate`]) — and judges each pair of traces with the conformance relation
+//! ([`crate::conformance`]).
 //!
-//! Every case is recorded: its cycle, the rules its reference trace exercises (the rule tags of
-//! its moves, passes and alarm), and its result — conform, the first divergence, or the
-//! candidate's failure (timeout, crash, garbage, …). Divergences are grouped by signature (kind,
-//! field, rule); the first case of each group is minimized: a generated case first by proptest's
-//! shrinking of its knobs, then — like a corpus program — by deleting lines while the same
-//! divergence stays.
+//! Every case is recorded: the cycle it runs ([`crate::registry::cycle_run`]), the rules its
+//! reference trace exercises (the rule tags of its moves, passes and alarm), and its result —
+//! conform, the first divergence, or the candidate's failure (timeout, crash, garbage, …).
+//! Divergences are grouped by signature and the first case of each group minimized
+//! ([`minimize`]).
 //!
 //! The bundle ([`bundle::write`]): `evidence.json` ([`evidence`]), `index.html` ([`html`]) with
 //! the traceability matrix ([`matrix`]) and the interpretation register, and one SVG toolpath
 //! per corpus program ([`plot`]).
 
 pub mod bundle;
+pub mod cases;
 pub mod evidence;
 pub mod html;
+pub mod judge;
 pub mod markdown;
 pub mod matrix;
+pub mod minimize;
 pub mod plot;
 
-use crate::campaign::cycle_of;
+pub use cases::FamilyRun;
+pub use judge::{candidate_engine, judge, CaseResult};
+pub use minimize::{Group, Minimized, Signature};
+
 use crate::candidate::{CandidateEngine, Limits};
-use crate::conformance::{self, Divergence, DivergenceKind};
-use crate::engine::{Engine, Failure, FailureKind, ImplEngine, SpecEngine};
-use crate::{corpus, gen};
+use crate::conformance;
+use crate::engine::{Engine, FailureKind, ImplEngine, SpecEngine};
+use crate::registry::{self, CycleRun, Family, FAMILIES};
 use cycle_vocab::text::Trace;
 use cycle_vocab::{Config, Rule};
-use proptest::strategy::{BoxedStrategy, Strategy, ValueTree};
-use proptest::test_runner::{Config as ProptestConfig, RngAlgorithm, TestRng, TestRunner};
 use std::collections::{BTreeMap, BTreeSet};
-use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::time::{Duration, Instant};
-
-/// The cycles a run covers, by their `--cycles` names.
-pub const CYCLES: &[(&str, &str)] = &[
-    ("g92", "G92"),
-    ("g76", "G76"),
-    ("g78", "G78"),
-    ("f76", "G76 fanuc"),
-    ("g162", "G162"),
-    ("g32", "G32/G33/G34"),
-];
-
-/// The cycle a program exercises: [`cycle_of`]'s name (`G92`, `G76`, `G76 fanuc`, `G78`), else
-/// `G162` or `G32/G33/G34` for the first of those codes, else `none`.
-pub fn cycle(program: &[u8], config: &Config) -> &'static str {
-    match cycle_of(program, config) {
-        "none" => {}
-        named => return named,
-    }
-    for block in cycle_vocab::Blocks::new(program) {
-        let Ok(block) = block else { break };
-        for g in block.g_codes().iter().filter(|g| !g.point && !g.negative) {
-            match g.mantissa {
-                162 => return "G162",
-                32..=34 => return "G32/G33/G34",
-                _ => {}
-            }
-        }
-    }
-    "none"
-}
 
 /// The default seed of the generated campaign (the differential tests' default).
 pub const DEFAULT_SEED: u64 = 0x5eed_c7c1_e0ac_1e00;
@@ -82,9 +55,9 @@ pub struct Options {
     /// The candidate command (`--candidate`); `None`: the production expander.
     pub candidate: Option<String>,
     pub limits: Limits,
-    /// The cycles covered (campaign names `G92`, `G76`, `G78`, `G76 fanuc`); all by default.
-    pub cycles: BTreeSet<&'static str>,
-    /// Generated cases per family (the garbage family gets a fifth).
+    /// The families covered (`--cycles`), in registry order; all by default.
+    pub cycles: Vec<&'static Family>,
+    /// Generated cases per family (the garbage generator gets a fifth).
     pub cases: u32,
     pub seed: u64,
 }
@@ -94,7 +67,7 @@ impl Default for Options {
         Options {
             candidate: None,
             limits: Limits::default(),
-            cycles: CYCLES.iter().map(|&(_, c)| c).collect(),
+            cycles: FAMILIES.iter().collect(),
             cases: DEFAULT_CASES,
             seed: DEFAULT_SEED,
         }
@@ -102,61 +75,23 @@ impl Default for Options {
 }
 
 impl Options {
-    /// Whether every cycle is covered (then programs without a cycle, and garbage, are too).
+    /// Whether every family is covered (then programs that run none, and garbage, are too).
     pub fn all_cycles(&self) -> bool {
-        self.cycles.len() == CYCLES.len()
+        self.cycles.len() == FAMILIES.len()
     }
 
-    /// Parses `--cycles`: `all` or a comma list of `g92`, `g76`, `g78`, `f76`, `g162`, `g32`.
-    pub fn parse_cycles(list: &str) -> Result<BTreeSet<&'static str>, String> {
-        if list == "all" {
-            return Ok(CYCLES.iter().map(|&(_, c)| c).collect());
+    /// Parses `--cycles`: `all` or a comma list of family names ([`registry::names`]).
+    pub fn parse_cycles(list: &str) -> Result<Vec<&'static Family>, String> {
+        let names: Vec<&str> = list.split(',').map(str::trim).collect();
+        if let Some(bad) = names.iter().find(|&&n| n != "all" && registry::find(n).is_none()) {
+            return Err(format!("--cycles takes all or a comma list of {}, not {bad:?}", registry::names()));
         }
-        let mut set = BTreeSet::new();
-        for name in list.split(',').map(str::trim) {
-            match CYCLES.iter().find(|&&(n, _)| n == name) {
-                Some(&(_, cycle)) => set.insert(cycle),
-                None => {
-                    return Err(format!("--cycles takes all or a comma list of g92, g76, g78, f76, g162, g32, not {name:?}"))
-                }
-            };
-        }
-        Ok(set)
+        Ok(FAMILIES.iter().filter(|f| names.contains(&"all") || names.contains(&f.name)).collect())
     }
 
-    /// Whether a case of `cycle` (a [`cycle`] name, `none` for no cycle) is in the run: with
-    /// every cycle selected, any case is.
-    pub fn covers(&self, cycle: &str) -> bool {
-        self.all_cycles() || self.cycles.contains(cycle)
-    }
-}
-
-/// How a case ended.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum CaseResult {
-    Conform,
-    Diverge(Box<Divergence>),
-    /// An engine produced no trace (`engine` is `spec` or the candidate's name).
-    Failure { engine: String, failure: Failure },
-}
-
-impl CaseResult {
-    pub fn conforms(&self) -> bool {
-        matches!(self, CaseResult::Conform)
-    }
-
-    /// One line: `conform`, `DIVERGE (field mismatch at event 5, field x, rule G92.PULLOUT)`,
-    /// `FAIL (timeout: …)`.
-    pub fn short(&self) -> String {
-        match self {
-            CaseResult::Conform => "conform".to_string(),
-            CaseResult::Diverge(d) => {
-                let field = d.field.map(|f| format!(", field {f}")).unwrap_or_default();
-                let rule = d.rule.map(|r| format!(", rule {r}")).unwrap_or_default();
-                format!("DIVERGE ({} at event {}{field}{rule})", d.kind, d.index)
-            }
-            CaseResult::Failure { engine, failure } => format!("FAIL ({engine} {})", failure.kind),
-        }
+    /// Whether a case that runs `run` is in the run: with every family covered, any case is.
+    pub fn covers(&self, run: CycleRun) -> bool {
+        self.all_cycles() || matches!(run, CycleRun::Family(f) if self.cycles.contains(&f))
     }
 }
 
@@ -174,8 +109,8 @@ pub enum Origin {
 pub struct CaseRecord {
     pub name: String,
     pub origin: Origin,
-    /// [`cycle`] of the program: `G92`, `G76`, `G76 fanuc`, `G78`, `G162`, `G32/G33/G34` or `none`.
-    pub cycle: &'static str,
+    /// The cycle the program runs ([`registry::cycle_run`]).
+    pub cycle: CycleRun,
     pub program: Vec<u8>,
     pub config: Config,
     /// Events of the reference trace (0 when the reference failed).
@@ -187,45 +122,6 @@ pub struct CaseRecord {
     pub result: CaseResult,
     /// Both traces, kept for corpus programs (the plots).
     pub traces: Option<(Trace, Option<Trace>)>,
-}
-
-/// The identity of a divergence for grouping: kind, field, the reference's rule.
-pub type Signature = (DivergenceKind, Option<&'static str>, Option<Rule>);
-
-fn signature(d: &Divergence) -> Signature {
-    (d.kind, d.field, d.rule)
-}
-
-/// A minimized divergent input.
-#[derive(Clone, Debug)]
-pub struct Minimized {
-    pub program: Vec<u8>,
-    pub config: Config,
-    pub divergence: Divergence,
-    /// `proptest shrinking, line deletion` or `line deletion`.
-    pub method: &'static str,
-    /// Engine runs spent.
-    pub steps: usize,
-}
-
-/// The cases with one divergence signature.
-#[derive(Clone, Debug)]
-pub struct Group {
-    pub signature: Signature,
-    /// Indices into [`Run::records`], in run order.
-    pub cases: Vec<usize>,
-    /// The first case minimized (the first [`MAX_MINIMIZED`] groups only).
-    pub minimized: Option<Minimized>,
-}
-
-/// A generated family's seed and size.
-#[derive(Clone, Debug)]
-pub struct FamilyRun {
-    pub family: &'static str,
-    pub seed: u64,
-    /// Cases drawn from the generator, and those kept (their cycle is in the run).
-    pub drawn: u32,
-    pub kept: u32,
 }
 
 /// The result of a certification run.
@@ -276,9 +172,9 @@ impl Run {
         m
     }
 
-    /// Per cycle: cases, conform, diverge, fail.
-    pub fn by_cycle(&self) -> BTreeMap<&'static str, [usize; 4]> {
-        let mut m: BTreeMap<&'static str, [usize; 4]> = BTreeMap::new();
+    /// Per cycle run: cases, conform, diverge, fail.
+    pub fn by_cycle(&self) -> BTreeMap<CycleRun, [usize; 4]> {
+        let mut m: BTreeMap<CycleRun, [usize; 4]> = BTreeMap::new();
         for r in &self.records {
             let c = m.entry(r.cycle).or_default();
             c[0] += 1;
@@ -320,7 +216,7 @@ impl Run {
             self.duration.as_secs_f64()
         );
         for (cycle, [n, ok, div, fail]) in self.by_cycle() {
-            s.push_str(&format!("  {cycle:<10} {n:>6} cases  {ok:>6} conform  {div:>5} diverge  {fail:>5} fail\n"));
+            s.push_str(&format!("  {:<20} {n:>6} cases  {ok:>6} conform  {div:>5} diverge  {fail:>5} fail\n", cycle.label()));
         }
         for g in &self.groups {
             let first = &self.records[g.cases[0]];
@@ -372,123 +268,6 @@ impl std::fmt::Display for Error {
     }
 }
 
-/// One case of the list: its name, origin, program and configuration, and (generated cases)
-/// the value tree it came from, for shrinking.
-struct Pending {
-    name: String,
-    origin: Origin,
-    program: Vec<u8>,
-    config: Config,
-    tree: Option<Box<dyn ValueTree<Value = gen::Case>>>,
-}
-
-/// The 32-byte ChaCha seed of a family: the run's seed mixed with the family's number.
-fn family_seed(seed: u64, family: u64) -> u64 {
-    seed ^ family.wrapping_mul(0x9e37_79b9_7f4a_7c15)
-}
-
-/// The generated families of a run: name, strategy, cases to draw.
-fn families(options: &Options) -> Vec<(&'static str, BoxedStrategy<gen::Case>, u32)> {
-    let mut f = Vec::new();
-    if options.cycles.contains("G92") {
-        f.push(("g92", gen::g92().boxed(), options.cases));
-    }
-    if ["G76", "G78", "G76 fanuc"].iter().any(|c| options.cycles.contains(c)) {
-        f.push(("multipass", gen::multipass().boxed(), options.cases));
-    }
-    if options.cycles.contains("G162") {
-        f.push(("g162", gen::g162().boxed(), options.cases));
-    }
-    if options.cycles.contains("G32/G33/G34") {
-        f.push(("thread_moves", gen::thread_moves().boxed(), options.cases));
-    }
-    if options.all_cycles() {
-        f.push(("garbage", gen::garbage().boxed(), options.cases.div_ceil(5)));
-    }
-    f
-}
-
-/// The case list: the corpus programs of the covered cycles, then the generated families.
-fn case_list(options: &Options) -> (Vec<Pending>, Vec<FamilyRun>) {
-    let mut list = Vec::new();
-    for p in corpus::PROGRAMS {
-        let config = p.config();
-        if options.covers(cycle(p.text.as_bytes(), &config)) {
-            list.push(Pending {
-                name: p.name.to_string(),
-                origin: Origin::Corpus { path: p.path },
-                program: p.text.as_bytes().to_vec(),
-                config,
-                tree: None,
-            });
-        }
-    }
-    let mut runs = Vec::new();
-    for (number, (family, strategy, count)) in families(options).into_iter().enumerate() {
-        let seed = family_seed(options.seed, number as u64 + 1);
-        let config = ProptestConfig { cases: count, failure_persistence: None, ..ProptestConfig::default() };
-        let mut runner = TestRunner::new_with_rng(config, TestRng::from_seed(RngAlgorithm::ChaCha, &gen::seed_bytes(seed)));
-        let mut kept = 0;
-        for index in 0..count {
-            let Ok(tree) = strategy.new_tree(&mut runner) else { continue };
-            let case = tree.current();
-            if !options.covers(cycle(&case.program, &case.config)) {
-                continue;
-            }
-            kept += 1;
-            list.push(Pending {
-                name: format!("{family}#{index}"),
-                origin: Origin::Generated { family, index },
-                program: case.program,
-                config: case.config,
-                tree: Some(tree),
-            });
-        }
-        runs.push(FamilyRun { family, seed, drawn: count, kept });
-    }
-    (list, runs)
-}
-
-fn panic_message(p: Box<dyn std::any::Any + Send>) -> String {
-    match p.downcast::<String>() {
-        Ok(s) => *s,
-        Err(p) => p.downcast_ref::<&str>().map_or_else(|| "panic".to_string(), |s| s.to_string()),
-    }
-}
-
-/// One engine on one case; a panic becomes a [`FailureKind::Panic`] failure.
-fn try_engine(engine: &dyn Engine, program: &[u8], config: &Config) -> Result<Trace, Failure> {
-    catch_unwind(AssertUnwindSafe(|| engine.try_expand(program, config)))
-        .unwrap_or_else(|p| Err(Failure { kind: FailureKind::Panic, message: panic_message(p) }))
-}
-
-/// Runs one case through the reference and the candidate: both traces (when produced) and the
-/// result.
-pub fn judge(reference: &dyn Engine, candidate: &dyn Engine, program: &[u8], config: &Config) -> (Option<Trace>, Option<Trace>, CaseResult) {
-    let r = match try_engine(reference, program, config) {
-        Ok(t) => t,
-        Err(failure) => return (None, None, CaseResult::Failure { engine: reference.name().to_string(), failure }),
-    };
-    match try_engine(candidate, program, config) {
-        Err(failure) => (Some(r), None, CaseResult::Failure { engine: candidate.name().to_string(), failure }),
-        Ok(c) => {
-            let result = match conformance::check(&r, &c) {
-                Ok(()) => CaseResult::Conform,
-                Err(d) => CaseResult::Diverge(Box::new(d)),
-            };
-            (Some(r), Some(c), result)
-        }
-    }
-}
-
-/// The candidate engine of a run.
-pub fn candidate_engine(options: &Options) -> Result<Box<dyn Engine>, Error> {
-    match &options.candidate {
-        None => Ok(Box::new(ImplEngine::default())),
-        Some(cmd) => Ok(Box::new(CandidateEngine::new(cmd, options.limits).map_err(|e| Error(format!("--candidate: {e}")))?)),
-    }
-}
-
 /// Runs the certification: every case, then the minimization of each divergence group.
 pub fn run(options: &Options, progress: &mut dyn FnMut(Progress)) -> Result<Run, Error> {
     let started = Instant::now();
@@ -501,7 +280,7 @@ pub fn run(options: &Options, progress: &mut dyn FnMut(Progress)) -> Result<Run,
         Some(c) => c,
         None => &imp,
     };
-    let (mut list, families) = case_list(options);
+    let (mut list, families) = cases::case_list(options);
     let total = list.len();
     let mut records = Vec::with_capacity(total);
     let mut bad = 0;
@@ -514,6 +293,7 @@ pub fn run(options: &Options, progress: &mut dyn FnMut(Progress)) -> Result<Run,
         if !result.conforms() {
             bad += 1;
         }
+        let cycle = registry::cycle_run(&p.program, &p.config, reference.as_ref());
         let mut rules = BTreeSet::new();
         let (events, ending) = match &reference {
             Some(t) => {
@@ -531,7 +311,7 @@ pub fn run(options: &Options, progress: &mut dyn FnMut(Progress)) -> Result<Run,
         records.push(CaseRecord {
             name: p.name.clone(),
             origin: p.origin.clone(),
-            cycle: cycle(&p.program, &p.config),
+            cycle,
             program: p.program.clone(),
             config: p.config,
             events,
@@ -543,21 +323,12 @@ pub fn run(options: &Options, progress: &mut dyn FnMut(Progress)) -> Result<Run,
     }
     progress(Progress { phase: "generated", done: total, total, bad });
 
-    let mut groups: Vec<Group> = Vec::new();
-    for (i, r) in records.iter().enumerate() {
-        if let CaseResult::Diverge(d) = &r.result {
-            let sig = signature(d);
-            match groups.iter_mut().find(|g| g.signature == sig) {
-                Some(g) => g.cases.push(i),
-                None => groups.push(Group { signature: sig, cases: vec![i], minimized: None }),
-            }
-        }
-    }
+    let mut groups = minimize::groups(&records);
     let to_minimize = groups.len().min(MAX_MINIMIZED);
     for (n, g) in groups.iter_mut().take(MAX_MINIMIZED).enumerate() {
         progress(Progress { phase: "minimizing", done: n, total: to_minimize, bad });
         let first = g.cases[0];
-        g.minimized = minimize(engine, &records[first], &mut list[first], g.signature);
+        g.minimized = minimize::minimize(engine, &records[first], &mut list[first], g.signature);
     }
     if to_minimize > 0 {
         progress(Progress { phase: "minimizing", done: to_minimize, total: to_minimize, bad });
@@ -574,134 +345,27 @@ pub fn run(options: &Options, progress: &mut dyn FnMut(Progress)) -> Result<Run,
     })
 }
 
-/// The divergence of `program` if it has signature `sig`.
-fn diverges_as(engine: &dyn Engine, program: &[u8], config: &Config, sig: Signature) -> Option<Divergence> {
-    match judge(&SpecEngine, engine, program, config).2 {
-        CaseResult::Diverge(d) if signature(&d) == sig => Some(*d),
-        _ => None,
-    }
-}
-
-/// The smallest input found that diverges with the same signature.
-fn minimize(engine: &dyn Engine, record: &CaseRecord, pending: &mut Pending, sig: Signature) -> Option<Minimized> {
-    let CaseResult::Diverge(first) = &record.result else { return None };
-    let mut best = Minimized {
-        program: record.program.clone(),
-        config: record.config,
-        divergence: (**first).clone(),
-        method: "line deletion",
-        steps: 0,
-    };
-    if let Some(tree) = pending.tree.as_mut() {
-        // proptest's shrinking: simplify while the case fails, complicate when it passes.
-        best.method = "proptest shrinking, line deletion";
-        let mut failing = true;
-        while best.steps < SHRINK_STEPS {
-            let moved = if failing { tree.simplify() } else { tree.complicate() };
-            if !moved {
-                break;
-            }
-            best.steps += 1;
-            let case = tree.current();
-            match diverges_as(engine, &case.program, &case.config, sig) {
-                Some(d) => {
-                    failing = true;
-                    best.program = case.program;
-                    best.config = case.config;
-                    best.divergence = d;
-                }
-                None => failing = false,
-            }
-        }
-    }
-    // Delete one line at a time, last first, while the same divergence stays.
-    let mut lines: Vec<Vec<u8>> = best.program.split_inclusive(|&b| b == b'\n').map(<[u8]>::to_vec).collect();
-    let budget = best.steps + SHRINK_STEPS;
-    let mut changed = true;
-    while changed && best.steps < budget {
-        changed = false;
-        for i in (0..lines.len()).rev() {
-            if best.steps >= budget || lines.len() <= 1 {
-                break;
-            }
-            let mut shorter = lines.clone();
-            shorter.remove(i);
-            let program = shorter.concat();
-            best.steps += 1;
-            if let Some(d) = diverges_as(engine, &program, &best.config, sig) {
-                lines = shorter;
-                best.program = program;
-                best.divergence = d;
-                changed = true;
-            }
-        }
-    }
-    Some(best)
-}
 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    use crate::engine::wrong::{Panics, SpecWith};
-
-    /// The spec with the X of every thread move one increment off: a wrong candidate.
-    const THREAD_X_OFF: SpecWith = SpecWith {
-        name: "thread-x-off",
-        fault: |_, m| m.x += i64::from(m.kind == cycle_vocab::MoveKind::Thread),
-    };
+    use crate::engine::wrong::Panics;
+    use crate::engine::Failure;
 
     #[test]
     fn cycles_option() {
-        assert_eq!(Options::parse_cycles("g92").unwrap(), BTreeSet::from(["G92"]));
-        assert_eq!(Options::parse_cycles("g76,f76").unwrap(), BTreeSet::from(["G76", "G76 fanuc"]));
-        assert_eq!(Options::parse_cycles("all").unwrap().len(), CYCLES.len());
-        assert_eq!(Options::parse_cycles("g162,g32").unwrap(), BTreeSet::from(["G162", "G32/G33/G34"]));
-        assert!(Options::parse_cycles("g93").is_err());
+        let names = |list: &str| -> Vec<&str> { Options::parse_cycles(list).unwrap().iter().map(|f| f.name).collect() };
+        assert_eq!(names("g92"), ["g92"]);
+        assert_eq!(names("f76, g76"), ["g76", "f76"]);
+        assert_eq!(names("g162,g32"), ["g162", "g32"]);
+        assert_eq!(Options::parse_cycles("all").unwrap().len(), FAMILIES.len());
+        let e = Options::parse_cycles("g92,g93").unwrap_err();
+        assert_eq!(e, format!("--cycles takes all or a comma list of {}, not \"g93\"", registry::names()));
         let o = Options { cycles: Options::parse_cycles("g92").unwrap(), ..Options::default() };
-        assert!(o.covers("G92") && !o.covers("G78") && !o.covers("none"));
-        assert!(Options::default().covers("none"));
-    }
-
-    #[test]
-    fn case_list_is_seeded_and_filtered() {
-        let o = Options { cycles: Options::parse_cycles("g92").unwrap(), cases: 20, ..Options::default() };
-        let (a, fa) = case_list(&o);
-        let (b, _) = case_list(&o);
-        assert_eq!(a.iter().map(|p| &p.program).collect::<Vec<_>>(), b.iter().map(|p| &p.program).collect::<Vec<_>>());
-        assert!(a.iter().all(|p| cycle(&p.program, &p.config) == "G92"));
-        assert_eq!(a.iter().filter(|p| matches!(p.origin, Origin::Corpus { .. })).count(), 6);
-        assert_eq!((fa.len(), fa[0].family, fa[0].drawn, fa[0].kept), (1, "g92", 20, 20));
-        let other = Options { seed: 1, ..o };
-        let (c, _) = case_list(&other);
-        assert_ne!(a.last().unwrap().program, c.last().unwrap().program);
-    }
-
-    #[test]
-    fn a_wrong_candidate_is_found_grouped_and_minimized() {
-        let o = Options { cycles: Options::parse_cycles("g92").unwrap(), cases: 10, ..Options::default() };
-        let (mut list, _) = case_list(&o);
-        let p = &list[0];
-        let (r, c, result) = judge(&SpecEngine, &THREAD_X_OFF, &p.program, &p.config);
-        assert!(r.is_some() && c.is_some());
-        let CaseResult::Diverge(d) = &result else { panic!("{result:?}") };
-        assert_eq!(d.field, Some("x"));
-        let record = CaseRecord {
-            name: p.name.clone(),
-            origin: p.origin.clone(),
-            cycle: "G92",
-            program: p.program.clone(),
-            config: p.config,
-            events: 0,
-            rules: BTreeSet::new(),
-            ending: String::new(),
-            result: result.clone(),
-            traces: None,
-        };
-        let m = minimize(&THREAD_X_OFF, &record, &mut list[0], signature(d)).unwrap();
-        assert_eq!(m.method, "line deletion");
-        assert!(m.program.len() < record.program.len(), "{}", String::from_utf8_lossy(&m.program));
-        assert_eq!(signature(&m.divergence), signature(d));
+        let g92 = CycleRun::Family(registry::find("g92").unwrap());
+        let g78 = CycleRun::Family(registry::find("g78").unwrap());
+        assert!(o.covers(g92) && !o.covers(g78) && !o.covers(CycleRun::NoCycle) && !o.covers(CycleRun::AlarmFirst));
+        assert!(Options::default().covers(CycleRun::NoCycle) && Options::default().covers(CycleRun::AlarmFirst));
     }
 
     #[test]

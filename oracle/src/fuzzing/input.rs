@@ -1,7 +1,7 @@
 //! The structured input of `diff_spec_impl` and `gcode_roundtrip`: a cycle command built with
 //! `arbitrary` from the fuzzer's bytes.
 //!
-//! Mostly a generator family and the knobs of `crate::gen` (the proptest generators'
+//! Mostly a generator and the knobs of `crate::gen` (the proptest generators'
 //! deterministic builders), so the fuzzer and the proptest campaigns share one description of
 //! the input space: most programs legal, many on the edges the rules turn on (Δd against Δdmin
 //! and k − d with exact ties, tapers, internal threads, inch and ISC grids, multi-start, every
@@ -13,23 +13,75 @@
 //! enter the seed corpus this way, and libFuzzer's byte mutations of them reach programs no
 //! builder writes.
 
-use crate::gen::{self, Case, Family, KNOBS};
+use crate::gen::{self, Case, KNOBS};
+use crate::registry::{self, Family, FAMILIES};
 use arbitrary::{Arbitrary, Unstructured};
 use cycle_vocab::{Config, Dialect, Grid, Increment, Units};
 
 /// A cycle command: built from knobs, or literal.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum CycleInput {
-    Built { family: Family, knobs: Vec<u32> },
+    Built { generator: Generator, knobs: Vec<u32> },
     /// A program under the configuration of `literal_config` `config`.
     Literal { config: u8, program: Vec<u8> },
 }
 
-/// The first byte (mod 20): 0–6 G76/G78/FANUC G76, 7–10 G92, 11 word soup, 12 corpus mutant,
-/// 13–15 literal, 16–17 G162 under `nc201`, 18–19 G32/G33/G34. (Families 16–19 came after the
-/// first seeds; bytes 0–15 kept their meaning, and the committed seeds' first bytes are < 16.)
-const FAMILY_BYTES: u8 = 20;
+/// A knob-built generator of `crate::gen`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Generator {
+    /// A registry family's.
+    Family(&'static Family),
+    /// G76, G78 or FANUC G76, the first knob choosing (`gen::multipass::any`).
+    Multipass,
+    /// Word soup.
+    Soup,
+    /// A corpus program with a few bytes changed.
+    Mutant,
+}
+
+impl Generator {
+    /// Its name in a committed case's provenance (`built.family`): the registry family's name,
+    /// `multipass`, `soup` or `mutant`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Generator::Family(f) => f.name,
+            Generator::Multipass => "multipass",
+            Generator::Soup => "soup",
+            Generator::Mutant => "mutant",
+        }
+    }
+
+    pub(crate) fn builder(self) -> gen::Builder {
+        match self {
+            Generator::Family(f) => f.build,
+            Generator::Multipass => gen::multipass::any,
+            Generator::Soup => gen::garbage::soup,
+            Generator::Mutant => gen::garbage::mutant,
+        }
+    }
+}
+
+/// The first byte, modulo 20 plus the families added since ([`added_families`]): 0–6
+/// G76/G78/FANUC G76, 7–10 G92, 11 word soup, 12 corpus mutant, 13–15 literal, 16–17 G162 under
+/// `nc201`, 18–19 G32/G33/G34, then one byte per added family in registry order. Bytes keep
+/// their meaning as families are added (the committed seeds' first bytes are < 20; 16–19 came
+/// after the first seeds, the same way).
+const FIRST_BYTES: u8 = 20;
 const LITERAL: u8 = 13;
+
+/// The families the first 20 bytes build as themselves (bytes 0–6 build G76, G78 and FANUC G76
+/// through the multipass generator, so those three get bytes of their own after the 20).
+const FIRST_FAMILIES: [&str; 3] = ["g92", "g162", "g32"];
+
+/// The registry families past the first 20 bytes, in registry order.
+fn added_families() -> Vec<&'static Family> {
+    FAMILIES.iter().filter(|f| !FIRST_FAMILIES.contains(&f.name)).collect()
+}
+
+/// The family named `name` (one of [`FIRST_FAMILIES`]).
+fn family(name: &str) -> Generator {
+    Generator::Family(registry::find(name).expect("the first bytes' families are registered"))
+}
 
 /// The configuration of a literal program: bit 0 FANUC, bit 1 inch, bit 2 ISC, bit 3 `nc201`
 /// (before bit 0), bit 4 `x_radius` = 1 (NC201.XMODE; other dialects alarm on it). Bits 5–7 are
@@ -60,21 +112,24 @@ pub fn literal_bits(config: &Config) -> u8 {
 
 impl<'a> Arbitrary<'a> for CycleInput {
     fn arbitrary(u: &mut Unstructured<'a>) -> arbitrary::Result<CycleInput> {
-        let family = match u.int_in_range(0..=FAMILY_BYTES - 1)? {
-            0..=6 => Family::Multipass,
-            7..=10 => Family::G92,
-            11 => Family::Soup,
-            12 => Family::Mutant,
-            16 | 17 => Family::G162,
-            18 | 19 => Family::ThreadMoves,
-            _ => {
+        let added = added_families();
+        let last = FIRST_BYTES - 1 + u8::try_from(added.len()).unwrap_or(0);
+        let generator = match u.int_in_range(0..=last)? {
+            0..=6 => Generator::Multipass,
+            7..=10 => family("g92"),
+            11 => Generator::Soup,
+            12 => Generator::Mutant,
+            13..=15 => {
                 let config = u.arbitrary::<u8>()? & 31;
                 let program = u.bytes(u.len())?.to_vec();
                 return Ok(CycleInput::Literal { config, program });
             }
+            16 | 17 => family("g162"),
+            18 | 19 => family("g32"),
+            n => Generator::Family(added[usize::from(n - FIRST_BYTES)]),
         };
         let knobs = (0..KNOBS).map(|_| u.arbitrary::<u32>()).collect::<arbitrary::Result<Vec<u32>>>()?;
-        Ok(CycleInput::Built { family, knobs })
+        Ok(CycleInput::Built { generator, knobs })
     }
 }
 
@@ -82,7 +137,7 @@ impl CycleInput {
     /// Reads the input from fuzz bytes (any bytes make an input).
     pub fn from_bytes(data: &[u8]) -> CycleInput {
         CycleInput::arbitrary_take_rest(Unstructured::new(data))
-            .unwrap_or(CycleInput::Built { family: Family::Multipass, knobs: vec![0; KNOBS] })
+            .unwrap_or(CycleInput::Built { generator: Generator::Multipass, knobs: vec![0; KNOBS] })
     }
 
     /// The fuzz bytes of a literal program under `config` (dialect and grid; the seed corpus).
@@ -95,7 +150,7 @@ impl CycleInput {
     /// The program and configuration the input describes.
     pub fn case(&self) -> Case {
         match self {
-            CycleInput::Built { family, knobs } => gen::build(*family, knobs),
+            CycleInput::Built { generator, knobs } => gen::build(generator.builder(), knobs),
             CycleInput::Literal { config, program } => {
                 Case { family: "literal", program: program.clone(), config: literal_config(*config) }
             }
@@ -110,7 +165,7 @@ mod tests {
     #[test]
     fn empty_input_is_the_plain_multipass_program() {
         let i = CycleInput::from_bytes(&[]);
-        assert_eq!(i, CycleInput::Built { family: Family::Multipass, knobs: vec![0; KNOBS] });
+        assert_eq!(i, CycleInput::Built { generator: Generator::Multipass, knobs: vec![0; KNOBS] });
         let c = i.case();
         assert_eq!(c.family, "g76");
         assert!(c.text().contains("G76"), "{}", c.text());
@@ -118,8 +173,8 @@ mod tests {
 
     #[test]
     fn bytes_pick_family_and_knobs() {
-        let CycleInput::Built { family, knobs } = CycleInput::from_bytes(&[7, 9, 0, 0, 0]) else { panic!() };
-        assert_eq!(family, Family::G92);
+        let CycleInput::Built { generator, knobs } = CycleInput::from_bytes(&[7, 9, 0, 0, 0]) else { panic!() };
+        assert_eq!(generator, family("g92"));
         assert_ne!(knobs[0], 0);
         assert!(knobs[1..].iter().all(|&k| k == 0));
     }
@@ -139,10 +194,30 @@ mod tests {
         let radius = literal_config(8 | 16 | 1);
         assert_eq!((radius.dialect, radius.params.x_radius), (Dialect::Nc201, Some(1)));
         assert_eq!(literal_bits(&radius), 8 | 16);
-        for (byte, family) in [(16, "g162"), (17, "g162"), (18, "thread"), (19, "thread"), (20, "g76")] {
+        for (byte, family) in [(16, "g162"), (17, "g162"), (18, "g32"), (19, "g32")] {
             let case = CycleInput::from_bytes(&[byte]).case();
             assert_eq!(case.family, family, "first byte {byte}");
         }
         assert_eq!(CycleInput::from_bytes(&[16]).case().config.dialect, Dialect::Nc201);
+    }
+
+    /// Every registry family has a first byte: the first 20 bytes' families (the multipass
+    /// byte's first knob choosing among three), then one byte each.
+    #[test]
+    fn every_family_is_reachable() {
+        let count = FIRST_BYTES + u8::try_from(added_families().len()).unwrap();
+        let mut built = std::collections::BTreeSet::new();
+        for byte in 0..count {
+            if let CycleInput::Built { generator, .. } = CycleInput::from_bytes(&[byte]) {
+                for first_knob in [0, 60, 90] {
+                    built.insert(gen::build(generator.builder(), &[first_knob]).family);
+                }
+            }
+        }
+        for f in FAMILIES {
+            assert!(built.contains(f.name), "no first byte builds {}: {built:?}", f.name);
+        }
+        // Past the table the bytes wrap around: the table's length is the byte 0 again.
+        assert_eq!(CycleInput::from_bytes(&[count]), CycleInput::from_bytes(&[0]));
     }
 }

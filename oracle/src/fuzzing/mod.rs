@@ -28,7 +28,7 @@ pub use input::CycleInput;
 use crate::campaign::{judge, Verdict};
 use crate::engine::{Engine, ImplEngine, SpecEngine};
 use crate::readback::{self, Motion};
-use cycle_vocab::{Blocks, Config, Dialect, Grid, Increment, Rule, Units};
+use cycle_vocab::{Alarm, Config, Dialect, Grid, Increment, Rule, Units};
 
 /// A fuzz target.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -77,30 +77,88 @@ fn parse_configs() -> [Config; 2] {
     [Config::default(), Config { dialect: Dialect::Fanuc, grid: inch_isc, ..Config::default() }]
 }
 
+/// A block as both lexers can state it: its line, and its words — the G words in the order
+/// written, the others alphabetically — each as sign, significant digits, decimals and point.
+type Read = Result<(u32, String), Alarm>;
+
+fn block_text(line: u32, words: impl Iterator<Item = (u8, bool, String, u32, bool)>) -> (u32, String) {
+    let mut s = String::new();
+    for (letter, negative, digits, decimals, point) in words {
+        let sign = if negative { "-" } else { "" };
+        let point = if point { "." } else { "" };
+        s.push_str(&format!(" {}{sign}{digits}e-{decimals}{point}", letter as char));
+    }
+    (line, s)
+}
+
+/// The reference lexer's reading of a program (`cycle_spec::lex`), block by block.
+fn spec_reading(data: &[u8]) -> Vec<Read> {
+    cycle_spec::lex::blocks(data)
+        .map(|b| {
+            b.map(|b| {
+                let word = |l: u8, n: &cycle_spec::lex::Number| (l, n.negative, n.digits.clone(), n.decimals, n.point);
+                let g = b.g_codes().map(|n| word(b'G', n)).collect::<Vec<_>>();
+                let rest = b.letters().into_iter().filter_map(|l| b.get(l).map(|n| word(l, n))).collect::<Vec<_>>();
+                block_text(b.line, g.into_iter().chain(rest))
+            })
+        })
+        .collect()
+}
+
+/// The production lexer's reading of a program (`cycle_impl::lex`), block by block.
+fn impl_reading(data: &[u8]) -> Vec<Read> {
+    let mut blocks = cycle_impl::lex::Blocks::new(data);
+    let mut out = Vec::new();
+    let mut block = cycle_impl::lex::Block::new();
+    loop {
+        match blocks.read(&mut block) {
+            Ok(false) => return out,
+            Err(a) => {
+                out.push(Err(a));
+                return out;
+            }
+            Ok(true) => {
+                let word = |l: u8, n: cycle_impl::number::Number| {
+                    let digits = if n.mantissa == 0 { String::new() } else { n.mantissa.to_string() };
+                    (l, n.negative, digits, u32::from(n.decimals), n.point)
+                };
+                let g = block.g_codes().iter().map(|n| word(b'G', *n)).collect::<Vec<_>>();
+                let rest = block.letters().filter_map(|l| block.get(l).map(|n| word(l, n))).collect::<Vec<_>>();
+                out.push(Ok(block_text(block.line, g.into_iter().chain(rest))));
+            }
+        }
+    }
+}
+
 /// `parse_blocks`: arbitrary bytes as a program (PRJ.LEX, PRJ.WORD).
 pub fn parse_blocks(data: &[u8]) -> Result<(), String> {
     let lines = data.iter().filter(|&&b| b == b'\n').count() + 1;
     let on_a_line = |line: u32| (1..=lines).contains(&(line as usize));
-    // The lexer alone: it ends, each block on a line of the program, at most one alarm (a
-    // lexical one, PRJ.LEX / PRJ.WORD, on a line of the program), then nothing.
-    let mut blocks = Blocks::new(data);
-    let mut count = 0usize;
-    while let Some(block) = blocks.next() {
-        count += 1;
-        if count > data.len() + 1 {
-            return Err("the lexer yields more blocks than the program has bytes".to_string());
-        }
+    // The two lexers read the same blocks, words and numbers, and stop at the same alarm.
+    let (reference, production) = (spec_reading(data), impl_reading(data));
+    if let Some(i) = (0..reference.len().max(production.len())).find(|&i| reference.get(i) != production.get(i)) {
+        return Err(format!(
+            "the lexers differ at block {}: reference {:?}, production {:?}\nprogram:\n{}",
+            i + 1,
+            reference.get(i),
+            production.get(i),
+            String::from_utf8_lossy(data)
+        ));
+    }
+    // The reading itself: each block on a line of the program, at most one alarm (a lexical
+    // one, PRJ.LEX / PRJ.WORD, on a line of the program), and it is last.
+    if reference.len() > data.len() + 1 {
+        return Err("the lexer yields more blocks than the program has bytes".to_string());
+    }
+    for (i, block) in reference.iter().enumerate() {
         match block {
-            Ok(b) if !on_a_line(b.line) => return Err(format!("a block on line {} of {lines}", b.line)),
+            Ok((line, _)) if !on_a_line(*line) => return Err(format!("a block on line {line} of {lines}")),
             Ok(_) => {}
-            Err(a) => {
-                if !matches!(a.rule, Rule::PrjLex | Rule::PrjWord) || !on_a_line(a.line) {
-                    return Err(format!("lexical alarm {a:?} (rule or line wrong, {lines} lines)"));
-                }
-                if blocks.next().is_some() {
-                    return Err("the lexer goes on after its alarm".to_string());
-                }
+            Err(a) if !matches!(a.rule, Rule::PrjLex | Rule::PrjWord) || !on_a_line(a.line) => {
+                return Err(format!("lexical alarm {a:?} (rule or line wrong, {lines} lines)"));
             }
+            Err(_) if i + 1 != reference.len() => return Err("the lexer goes on after its alarm".to_string()),
+            Err(_) => {}
         }
     }
     // Both engines: no panic, a rejection is an alarm on a line of the program, and they agree.

@@ -2,15 +2,17 @@
 //! against what a committed case expects, and turning a fuzz input into a committed case.
 
 use super::decoded::{Built, Ending, Expect, Lexed, Origin, ProgramCase};
+use super::input::Generator;
 use super::{gcode_roundtrip_case, parse_blocks, verdict_ok, CycleInput, Target};
 use crate::campaign::judge;
 use crate::engine::{ImplEngine, SpecEngine};
-use cycle_vocab::{Blocks, Config};
+use cycle_vocab::Config;
 
-/// What the lexer makes of `program`.
+/// What the reference's lexer makes of `program` (`parse_blocks` checks the production lexer
+/// reads the same).
 pub fn lexed(program: &[u8]) -> Lexed {
     let mut blocks = 0;
-    for block in Blocks::new(program) {
+    for block in cycle_spec::lex::blocks(program) {
         match block {
             Ok(_) => blocks += 1,
             Err(a) => return Lexed { blocks, ends: Ending::Alarm(a) },
@@ -91,7 +93,7 @@ pub fn regression(target: Target, data: &[u8], origin: Origin) -> Option<(Vec<u8
             let input = CycleInput::from_bytes(data);
             let case = input.case();
             let built = match input {
-                CycleInput::Built { family, knobs } => Some(built(family, &knobs)),
+                CycleInput::Built { generator, knobs } => Some(built(generator, &knobs)),
                 CycleInput::Literal { .. } => None,
             };
             (case.program, Some(case.config), built)
@@ -115,9 +117,9 @@ pub fn case_for(target: Target, program: &[u8], config: Option<Config>, origin: 
 }
 
 /// The provenance of a knob-built program, trailing zero knobs left out.
-pub fn built(family: crate::gen::Family, knobs: &[u32]) -> Built {
+pub fn built(generator: Generator, knobs: &[u32]) -> Built {
     let len = knobs.iter().rposition(|&k| k != 0).map_or(0, |i| i + 1);
-    Built { family: format!("{family:?}").to_lowercase(), knobs: knobs[..len].to_vec() }
+    Built { family: generator.name().to_string(), knobs: knobs[..len].to_vec() }
 }
 
 #[cfg(test)]
@@ -156,9 +158,9 @@ mod tests {
     #[test]
     fn knob_built_inputs_keep_their_generator() {
         let data = [7, 9, 0, 0, 0];
-        let CycleInput::Built { family, .. } = CycleInput::from_bytes(&data) else { panic!("a knob-built input") };
+        let CycleInput::Built { generator, .. } = CycleInput::from_bytes(&data) else { panic!("a knob-built input") };
         let (_, case) = regression(Target::GcodeRoundtrip, &data, origin(Target::GcodeRoundtrip)).unwrap();
-        assert_eq!(case.built, Some(built(family, &[9, 0, 0])));
+        assert_eq!(case.built, Some(built(generator, &[9, 0, 0])));
         assert_eq!(case.built.unwrap().knobs, vec![9]);
         assert_eq!(case.expect, Expect { round_trips: Some(true), ..Expect::default() });
         assert!(regression(Target::ImplInvariants, &[], origin(Target::ImplInvariants)).is_none());

@@ -10,17 +10,16 @@
 use super::decoded::{Origin, ProgramCase};
 use super::replay::{built, case_for};
 use super::{CycleInput, Target};
-use crate::gen::{self, Family, KNOBS};
+use super::input::Generator;
+use crate::gen::{self, KNOBS};
+use crate::registry::FAMILIES;
 
-/// The families seeded, by seed name.
-const FAMILIES: [(&str, Family); 6] = [
-    ("g76_g78_f76", Family::Multipass),
-    ("g92", Family::G92),
-    ("soup", Family::Soup),
-    ("mutant", Family::Mutant),
-    ("g162", Family::G162),
-    ("g32_g33_g34", Family::ThreadMoves),
-];
+/// The generators seeded: every registry family's, then word soup and corpus mutants. A seed is
+/// named after its generator ([`Generator::name`]).
+fn generators() -> Vec<Generator> {
+    let families = FAMILIES.iter().map(Generator::Family);
+    families.chain([Generator::Soup, Generator::Mutant]).collect()
+}
 
 fn origin(target: Target, what: String) -> Origin {
     Origin { target: target.name().to_string(), found_by: format!("built-in seed: {what}"), date: None }
@@ -42,11 +41,12 @@ pub fn seeds(target: Target) -> Vec<(String, Vec<u8>, ProgramCase)> {
         return out;
     }
     let mut rng = 0x5eed_f022_u64;
-    for (name, family) in FAMILIES {
+    for generator in generators() {
+        let name = generator.name();
         let mut add = |seed: String, knobs: Vec<u32>| {
-            let case = gen::build(family, &knobs);
-            let origin = origin(target, format!("family {name}, {seed}"));
-            let c = case_for(target, &case.program, Some(case.config), origin, Some(built(family, &knobs)));
+            let case = gen::build(generator.builder(), &knobs);
+            let origin = origin(target, format!("generator {name}, {seed}"));
+            let c = case_for(target, &case.program, Some(case.config), origin, Some(built(generator, &knobs)));
             out.extend(c.map(|c| (format!("{name}_{seed}"), case.program, c)));
         };
         add("plain".to_string(), Vec::new());
@@ -82,7 +82,7 @@ pub fn encode(target: Target, program: &[u8], case: &ProgramCase) -> Result<Vec<
     if let Some(b) = &case.built {
         // The first byte that selects the family, then each knob as four bytes.
         let first = (0..=u8::MAX).find(|&x| {
-            matches!(CycleInput::from_bytes(&[x]), CycleInput::Built { family, .. } if built(family, &[]).family == b.family)
+            matches!(CycleInput::from_bytes(&[x]), CycleInput::Built { generator, .. } if generator.name() == b.family)
         });
         if let Some(first) = first {
             let mut bytes = vec![first];
@@ -129,7 +129,7 @@ mod tests {
             .iter()
             .map(|(_, p, c)| if c.built.is_some() { CycleInput::from_bytes(&encode(Target::DiffSpecImpl, p, c).unwrap()).case().family } else { "literal" })
             .collect();
-        let expected = ["f76", "g162", "g76", "g78", "g92", "literal", "mutant", "soup", "thread"];
+        let expected = ["f76", "g162", "g32", "g76", "g78", "g90", "g92", "g94", "literal", "mutant", "soup"];
         assert_eq!(families.into_iter().collect::<Vec<_>>(), expected);
     }
 

@@ -1,19 +1,19 @@
-//! Generators for G162 (M004, `--dialect nc201`) and the thread moves G32/G33/G34 (M003).
+//! The g162 family: G162 programs (M004, `--dialect nc201`).
 //!
-//! G162 programs cover the register's input space: external and internal threads, G90 and G91,
+//! They cover the register's input space: external and internal threads, G90 and G91,
 //! X as diameter or radius (`x_radius`), single and multi-pass (P/Q ties, Q > P, remainders of a
 //! few increments), the run-out leg V, taper W, half-degree infeed angles of both signs, B, a
 //! variable pitch I over J (growing, shrinking, already below |I|, F = |I| exactly), F omitted (modal feed), and
-//! words just outside their ranges, missing words and every cycle check. Thread-move programs
-//! chain G32/G33/G34 blocks with modal repeats, G33 start angles and G34 lead changes that keep
-//! or lose a legal lead. Pass counts stay small (≤ about 40), so a case runs in microseconds.
+//! words just outside their ranges, missing words and every cycle check. Pass counts stay small
+//! (≤ about 40), so a case runs in microseconds.
 
-use super::{config, lead, lead_text, tail, unit, Case, Dice, Writer, LEAD_UNIT};
+use super::writer::{lead, lead_text, tail, Lead, Writer};
+use super::{config, unit, Case, Dice, LEAD_UNIT};
 use cycle_vocab::text::fixed;
-use cycle_vocab::Dialect;
+use cycle_vocab::{Config, Dialect};
 
 /// A G162 program under `nc201`.
-pub(super) fn build_g162(dice: &mut Dice) -> Case {
+pub fn build(dice: &mut Dice) -> Case {
     let mut config = config(&mut dice.fork(48), false);
     config.dialect = Dialect::Nc201;
     let grid = config.grid;
@@ -110,10 +110,10 @@ pub(super) fn build_g162(dice: &mut Dice) -> Case {
         let mut f_counts = None;
         if !d.chance(15) {
             let f = lead(d, grid).map(|l| match l {
-                super::Lead::I(_) => super::Lead::F(LEAD_UNIT + d.range(0, LEAD_UNIT)),
+                Lead::I(_) => Lead::F(LEAD_UNIT + d.range(0, LEAD_UNIT)),
                 other => other,
             });
-            if let Ok(super::Lead::F(c)) = f {
+            if let Ok(Lead::F(c)) = f {
                 f_counts = Some(c);
             }
             words.push(lead_text(&mut w, &f, grid));
@@ -151,122 +151,29 @@ pub(super) fn build_g162(dice: &mut Dice) -> Case {
         w.block(&words);
     }
     tail(&mut w, &mut dice.fork(1));
-    Case { family: "g162", program: w.out.into_bytes(), config }
+    Case { family: "g162", program: w.finish(), config }
 }
 
-/// G32 / G33 / G34 programs under `gsk` or `fanuc` (and sometimes `nc201`, where they are
-/// refused).
-pub(super) fn build_thread_moves(dice: &mut Dice) -> Case {
-    let fanuc = dice.fork(1).chance(30);
-    let mut config = config(&mut dice.fork(48), fanuc);
-    if dice.fork(1).chance(3) {
-        config.dialect = Dialect::Nc201;
-    }
-    let grid = config.grid;
-    let dec = grid.decimals();
-    let lead_dec = grid.lead_decimals();
-    let u = unit(grid);
-    let mut w = Writer::new(&mut dice.fork(2));
-    let d = &mut dice.fork(6);
-    let (mut x, mut z) = (d.range(2 * u, 80 * u), d.range(-5 * u, 20 * u));
-    let start = [('G', "0".to_string()), ('X', w.length(x, dec)), ('Z', w.length(z, dec))];
-    w.block(&start);
-    let mut first = true;
-    let mut modal = 3; // G00: a repeat block then is a rapid
-    let blocks = 1 + dice.fork(1).below(5) as usize;
-    for _ in 0..blocks {
-        let d = &mut dice.fork(24);
-        // G32, G33, G34, or a modal repeat of the current mode (a stray word now and then).
-        let written = d.weighted(&[35, 25, 30, 10]);
-        let code = if written == 3 { modal } else { written };
-        modal = code;
-        let mut words: Vec<(char, String)> = Vec::new();
-        match written {
-            0 => words.push(('G', "32".into())),
-            1 => words.push(('G', "33".into())),
-            2 => words.push(('G', "34".into())),
-            _ => {}
-        }
-        // The end point: mostly along Z, sometimes a taper or a face move, sometimes nowhere.
-        let (nx, nz) = match d.weighted(&[55, 25, 10, 10]) {
-            0 => (x, z - d.range(1, 40 * u)),
-            1 => (x + d.range(-4 * u, 4 * u), z - d.range(1, 40 * u)),
-            2 => (x - d.range(1, 10 * u), z),
-            _ => (x, z),
-        };
-        words.push(super::axis(&mut w, d, 'X', 'U', nx, x, dec));
-        words.push(super::axis(&mut w, d, 'Z', 'W', nz, z, dec));
-        if first || d.chance(30) {
-            let l = lead(d, grid);
-            if !(first && d.chance(5)) {
-                words.push(lead_text(&mut w, &l, grid));
-            }
-        }
-        if (code == 1 && d.chance(70)) || d.chance(2) {
-            let p = if d.chance(95) { d.range(0, 359_999) } else { d.one_of(&[360_000, -1]) };
-            words.push(('P', p.to_string()));
-        }
-        if (code == 2 && d.chance(95)) || d.chance(2) {
-            // Mostly small against the lead; sometimes large enough to lose the lead.
-            let k = match d.weighted(&[85, 10, 5]) {
-                0 => d.range(-LEAD_UNIT / 100, LEAD_UNIT / 100),
-                1 => -d.range(LEAD_UNIT / 10, 2 * LEAD_UNIT),
-                _ => d.range(LEAD_UNIT, 10_000 * LEAD_UNIT),
-            };
-            words.push(('K', w.length(k, lead_dec)));
-        }
-        w.block(&words);
-        x = nx;
-        z = nz;
-        first = false;
-    }
-    tail(&mut w, &mut dice.fork(1));
-    Case { family: "thread", program: w.out.into_bytes(), config }
+/// The bench case: a straight thread of depth P = `n` increments cut Q = 1 at a time — `n`
+/// passes (G162.PQ, G162.SPLIT).
+pub fn bench(n: usize) -> Case {
+    let p = format!("G0 X60 Z5\nG162 X30 Z-20 H400 P{}.{:03} Q0.001 F2\n", n / 1000, n % 1000);
+    Case { family: "g162", program: p.into_bytes(), config: Config { dialect: Dialect::Nc201, ..Config::default() } }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::super::{build, Family, KNOBS};
-    use crate::engine::{Engine, SpecEngine};
     use cycle_vocab::Rule;
-    use std::collections::BTreeMap;
 
-    /// How the spec ends `n` cases of a family: "ok" or the alarm's rule.
-    fn outcomes(family: Family, n: u32) -> BTreeMap<String, u32> {
-        let mut seen = BTreeMap::new();
-        let mut s = 0x2545_f491_4f6c_dd1du64;
-        for _ in 0..n {
-            let knobs: Vec<u32> = (0..KNOBS)
-                .map(|_| {
-                    s ^= s << 13;
-                    s ^= s >> 7;
-                    s ^= s << 17;
-                    s as u32
-                })
-                .collect();
-            let case = build(family, &knobs);
-            let t = SpecEngine.expand(&case.program, &case.config);
-            let key = t.alarm.map_or("ok".to_string(), |a| a.rule.id().to_string());
-            *seen.entry(key).or_default() += 1;
-        }
-        seen
-    }
-
-    /// The generators mostly build legal programs and reach every check of the register.
+    /// The generator mostly builds legal programs and reaches every check of the register.
     #[test]
-    fn families_reach_the_rules() {
-        let g162 = outcomes(Family::G162, 3_000);
-        assert!(g162["ok"] > 1_500, "{g162:?}");
-        for rule in [
-            Rule::G162A, Rule::G162B, Rule::G162H, Rule::G162I, Rule::G162J, Rule::G162Pq, Rule::G162F,
-            Rule::PrjMaxPass, Rule::PrjWord, Rule::PrjDialect, Rule::Nc201AbsInc,
-        ] {
-            assert!(g162.contains_key(rule.id()), "G162 family never reaches {rule}: {g162:?}");
-        }
-        let threads = outcomes(Family::ThreadMoves, 3_000);
-        assert!(threads["ok"] > 1_500, "{threads:?}");
-        for rule in [Rule::G33, Rule::G34, Rule::ComLead, Rule::PrjDialect] {
-            assert!(threads.contains_key(rule.id()), "thread family never reaches {rule}: {threads:?}");
-        }
+    fn g162_reaches_the_rules() {
+        super::super::tests::assert_reaches(
+            super::build,
+            &[
+                Rule::G162A, Rule::G162B, Rule::G162H, Rule::G162I, Rule::G162J, Rule::G162Pq, Rule::G162F,
+                Rule::PrjMaxPass, Rule::PrjWord, Rule::PrjDialect, Rule::Nc201AbsInc,
+            ],
+        );
     }
 }

@@ -1,0 +1,161 @@
+//! Divergence groups — the cases of one signature (kind, field, rule) — and the minimization of
+//! a group's first case: a generated case by proptest's shrinking of its knobs, then, like a
+//! corpus program, by deleting lines while the same divergence stays.
+
+use super::cases::Pending;
+use super::{judge, CaseRecord, CaseResult, SHRINK_STEPS};
+use crate::conformance::{Divergence, DivergenceKind};
+use crate::engine::{Engine, SpecEngine};
+use cycle_vocab::{Config, Rule};
+
+/// The identity of a divergence for grouping: kind, field, the reference's rule.
+pub type Signature = (DivergenceKind, Option<&'static str>, Option<Rule>);
+
+pub fn signature(d: &Divergence) -> Signature {
+    (d.kind, d.field, d.rule)
+}
+
+/// A minimized divergent input.
+#[derive(Clone, Debug)]
+pub struct Minimized {
+    pub program: Vec<u8>,
+    pub config: Config,
+    pub divergence: Divergence,
+    /// `proptest shrinking, line deletion` or `line deletion`.
+    pub method: &'static str,
+    /// Engine runs spent.
+    pub steps: usize,
+}
+
+/// The cases with one divergence signature.
+#[derive(Clone, Debug)]
+pub struct Group {
+    pub signature: Signature,
+    /// Indices into [`super::Run::records`], in run order.
+    pub cases: Vec<usize>,
+    /// The first case minimized (the first [`super::MAX_MINIMIZED`] groups only).
+    pub minimized: Option<Minimized>,
+}
+
+
+/// The divergent cases of `records` grouped by signature, in run order.
+pub(super) fn groups(records: &[CaseRecord]) -> Vec<Group> {
+    let mut groups: Vec<Group> = Vec::new();
+    for (i, r) in records.iter().enumerate() {
+        if let CaseResult::Diverge(d) = &r.result {
+            let sig = signature(d);
+            match groups.iter_mut().find(|g| g.signature == sig) {
+                Some(g) => g.cases.push(i),
+                None => groups.push(Group { signature: sig, cases: vec![i], minimized: None }),
+            }
+        }
+    }
+    groups
+}
+
+/// The divergence of `program` if it has signature `sig`.
+fn diverges_as(engine: &dyn Engine, program: &[u8], config: &Config, sig: Signature) -> Option<Divergence> {
+    match judge(&SpecEngine, engine, program, config).2 {
+        CaseResult::Diverge(d) if signature(&d) == sig => Some(*d),
+        _ => None,
+    }
+}
+
+/// The smallest input found that diverges with the same signature.
+pub(super) fn minimize(engine: &dyn Engine, record: &CaseRecord, pending: &mut Pending, sig: Signature) -> Option<Minimized> {
+    let CaseResult::Diverge(first) = &record.result else { return None };
+    let mut best = Minimized {
+        program: record.program.clone(),
+        config: record.config,
+        divergence: (**first).clone(),
+        method: "line deletion",
+        steps: 0,
+    };
+    if let Some(tree) = pending.tree.as_mut() {
+        // proptest's shrinking: simplify while the case fails, complicate when it passes.
+        best.method = "proptest shrinking, line deletion";
+        let mut failing = true;
+        while best.steps < SHRINK_STEPS {
+            let moved = if failing { tree.simplify() } else { tree.complicate() };
+            if !moved {
+                break;
+            }
+            best.steps += 1;
+            let case = tree.current();
+            match diverges_as(engine, &case.program, &case.config, sig) {
+                Some(d) => {
+                    failing = true;
+                    best.program = case.program;
+                    best.config = case.config;
+                    best.divergence = d;
+                }
+                None => failing = false,
+            }
+        }
+    }
+    // Delete one line at a time, last first, while the same divergence stays.
+    let mut lines: Vec<Vec<u8>> = best.program.split_inclusive(|&b| b == b'\n').map(<[u8]>::to_vec).collect();
+    let budget = best.steps + SHRINK_STEPS;
+    let mut changed = true;
+    while changed && best.steps < budget {
+        changed = false;
+        for i in (0..lines.len()).rev() {
+            if best.steps >= budget || lines.len() <= 1 {
+                break;
+            }
+            let mut shorter = lines.clone();
+            shorter.remove(i);
+            let program = shorter.concat();
+            best.steps += 1;
+            if let Some(d) = diverges_as(engine, &program, &best.config, sig) {
+                lines = shorter;
+                best.program = program;
+                best.divergence = d;
+                changed = true;
+            }
+        }
+    }
+    Some(best)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use super::super::{CaseRecord, Options};
+    use crate::engine::wrong::SpecWith;
+    use crate::registry::CycleRun;
+    use std::collections::BTreeSet;
+
+    /// The spec with the X of every thread move one increment off: a wrong candidate.
+    const THREAD_X_OFF: SpecWith = SpecWith {
+        name: "thread-x-off",
+        fault: |_, m| m.x += i64::from(m.kind == cycle_vocab::MoveKind::Thread),
+    };
+
+    #[test]
+    fn a_wrong_candidate_is_found_grouped_and_minimized() {
+        let o = Options { cycles: Options::parse_cycles("g92").unwrap(), cases: 10, ..Options::default() };
+        let (mut list, _) = super::super::cases::case_list(&o);
+        let p = &list[0];
+        let (r, c, result) = judge(&SpecEngine, &THREAD_X_OFF, &p.program, &p.config);
+        assert!(r.is_some() && c.is_some());
+        let CaseResult::Diverge(d) = &result else { panic!("{result:?}") };
+        assert_eq!(d.field, Some("x"));
+        let record = CaseRecord {
+            name: p.name.clone(),
+            origin: p.origin.clone(),
+            cycle: CycleRun::Family(crate::registry::find("g92").unwrap()),
+            program: p.program.clone(),
+            config: p.config,
+            events: 0,
+            rules: BTreeSet::new(),
+            ending: String::new(),
+            result: result.clone(),
+            traces: None,
+        };
+        let m = minimize(&THREAD_X_OFF, &record, &mut list[0], signature(d)).unwrap();
+        assert_eq!(m.method, "line deletion");
+        assert!(m.program.len() < record.program.len(), "{}", String::from_utf8_lossy(&m.program));
+        assert_eq!(signature(&m.divergence), signature(d));
+    }
+}
