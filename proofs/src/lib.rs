@@ -21,6 +21,7 @@ pub mod expander_envelope;
 pub mod g92_pullout;
 pub mod g162_split;
 pub mod g162_pitch;
+pub mod g90_envelope;
 
 pub mod invariants;
 pub mod trace_depths;
