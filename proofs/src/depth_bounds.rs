@@ -17,7 +17,7 @@
 //! `depth_step_monotone` covers every pass number by induction; this harness adds the
 //! whole-sequence view (cuts, the last depth, the count) over the first K + 1 passes.
 //!
-//! **Not a Kani proof.** Kani 0.61.0 / CBMC 6.4.0 ran out of memory (10–13 GB) in symbolic execution (issue #25), for the reasons of `depth_step_monotone`. The per-step shape is Kani's `depth_step_clamp`; the whole-sequence view and the pass count are z3's (smt/ lemmas 11, 12) and this body's drivers'. The body runs under `cargo test` (bounded-exhaustive and random
+//! **Not a Kani proof.** Kani 0.61.0 / CBMC 6.4.0 ran out of memory (10–13 GB) in symbolic execution (issue #25), for the reasons of `depth_step_monotone`. The per-step shape is the TEST `depth_step_clamp`; the whole-sequence view and the pass count are z3's (smt/ lemmas 11, 12) and this body's drivers'. The body runs under `cargo test` (bounded-exhaustive and random
 //! drivers); the scope named `KANI` below is what a Kani run would take, kept for the drivers.
 //!
 //! **Former Kani bounds.** K = [`KANI`]`.max_passes` = 4: the harness loop runs at most K + 1 = 5

@@ -30,7 +30,7 @@
 //! and for monotonicity. Hence every reachable pass equals the closed form, and every step of
 //! every schedule is monotone — for all n, not only the first few.
 //!
-//! **Not a Kani proof.** Kani 0.61.0 / CBMC 6.4.0 ran out of memory (10–13 GB) in symbolic execution (3 M steps, issue #25): the closed form it checks rests on nonlinear identities of 30- to 120-bit values (squares, a²/c²) that no SAT encoding decides in useful time. Its Kani part is now `depth_step_clamp` (the shape of every step, full ranges); the closed form and monotonicity are z3's (smt/ lemmas 01–12) and this body's drivers'. The body runs under `cargo test` (bounded-exhaustive and random
+//! **Not a Kani proof.** Kani 0.61.0 / CBMC 6.4.0 ran out of memory (10–13 GB) in symbolic execution (3 M steps, issue #25): the closed form it checks rests on nonlinear identities of 30- to 120-bit values (squares, a²/c²) that no SAT encoding decides in useful time. `depth_step_clamp` (the shape of every step, also a TEST) did not finish under Kani either; the closed form and monotonicity are z3's (smt/ lemmas 01–12) and this body's drivers'. The body runs under `cargo test` (bounded-exhaustive and random
 //! drivers); the scope named `KANI` below is what a Kani run would take, kept for the drivers.
 //!
 //! **Former Kani bounds.** Everything is symbolic over the full legal ranges. The loops are the

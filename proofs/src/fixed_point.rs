@@ -25,7 +25,7 @@
 //! entry against the tangent addition formula from its neighbour, in exact interval arithmetic,
 //! chained from 0° to 45° = 1 and on to 89°; and against `f64::tan`.
 //!
-//! **Not a Kani proof.** Kani 0.61.0 / CBMC 6.4.0 reached no verdict in 600 s (3 M variables, 20.7 M clauses; issue #25): every branch checks a nonlinear specification (r² ≤ n, q·den, δ·tan) of up to 128-bit values. `isqrt` is stubbed by its specification in the Kani harness `depth_step_clamp` (trusted: core's function). The body runs under `cargo test` (bounded-exhaustive and random
+//! **Not a Kani proof.** Kani 0.61.0 / CBMC 6.4.0 reached no verdict in 600 s (3 M variables, 20.7 M clauses; issue #25): every branch checks a nonlinear specification (r² ≤ n, q·den, δ·tan) of up to 128-bit values. (`depth_step_clamp` keeps a Kani stub of `isqrt` by its specification for a next attempt.) The body runs under `cargo test` (bounded-exhaustive and random
 //! drivers); the scope named `KANI` below is what a Kani run would take, kept for the drivers.
 //!
 //! **Former Kani bounds.** `isqrt` is core's loop-free staged root; our 256-bit helpers loop at most 4

@@ -130,7 +130,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
                 (Some(e), _) => e,
                 (None, Rule::G76Depth1) => {
                     let sq = depth_square(m as u32, dd);
-                    below = !(sq > (t as u128) * (t as u128 - 1));
+                    below = sq <= (t as u128) * (t as u128 - 1);
                     if s.is_some_and(|s| m + 1 == u64::from(s)) {
                         // round(√(m·Δd²)), taken from the impl's helper and checked by its
                         // bracket here (an independent check, not a trust).

@@ -164,12 +164,18 @@ pub const PROPERTIES: &[Property] = &[
         harness: "depth_step_clamp",
         rules: &["G76.DEPTH.LAST", "G76.DEPTH.MIN", "G78.DEPTHMODE", "PRJ.MAXPASS"],
         statement: "Every step of the production depth schedule (first, or next of any pass): numbered n + 1, depth in 1…k − d, last exactly at k − d and named G76.DEPTH.LAST, a minimum-cut step adds exactly Δdmin, a constant step is n·Δd, nothing after the last or past pass 2^32 − 1; the pass count is at most the limit and does not depend on it.",
-        checked_by: CheckedBy::Kani,
+        checked_by: CheckedBy::Drivers,
     },
     Property {
         harness: "g90_envelope",
         rules: &["G90.FORMAT", "G90.TAPER", "G90.PATH", "G94.FORMAT", "G94.TAPER", "G94.PATH", "PRJ.NOOP"],
         statement: "One G90/G94 cycle: refused exactly by the register's step 5 in its order, else one ROUGH pass header (index, depth = the infeed of ①) then exactly the moves ①–④ (none to the current position), every point in the box of A, D and C, back at A.",
+        checked_by: CheckedBy::Kani,
+    },
+    Property {
+        harness: "g92_pullout_geometry",
+        rules: &["G92.JK.1", "G92.JK.2", "G92.JK.3", "G92.JK.4", "G92.JK.5", "G92.JK.6", "G92.JK.7", "G92.PULLOUT", "COM.LONGAXIS"],
+        statement: "Below the lexer: the register's J/K/No.19 table, the pull-out geometry (long axis at |W| > |R|, start K before the end toward A, end s·J out on X or J toward A on Z, the interpolated coordinate's sign), No.19 × lead / 10 rounded once half up.",
         checked_by: CheckedBy::Kani,
     },
     Property {
@@ -211,8 +217,8 @@ pub const PROPERTIES: &[Property] = &[
     Property {
         harness: "g162_split_exact",
         rules: &["G162.PQ", "G162.SPLIT", "PRJ.MAXPASS"],
-        statement: "The G162 depth split is the register's: k = ⌊P/Q⌋ full passes, the remainder split at D/2, 3D/4, 7D/8, D each rounded once half up (a target not deeper dropped), last exactly at P, the pass count.",
-        checked_by: CheckedBy::Drivers,
+        statement: "Kani for P, Q < 2^12, drivers over 1…N: the G162 depth split is the register's: k = ⌊P/Q⌋ full passes, the remainder split at D/2, 3D/4, 7D/8, D each rounded once half up (a target not deeper dropped), last exactly at P, the pass count.",
+        checked_by: CheckedBy::Kani,
     },
     Property {
         harness: "g162_variable_pitch",
