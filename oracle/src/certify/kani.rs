@@ -217,8 +217,8 @@ pub const PROPERTIES: &[Property] = &[
     Property {
         harness: "g162_split_exact",
         rules: &["G162.PQ", "G162.SPLIT", "PRJ.MAXPASS"],
-        statement: "Kani for P, Q < 2^12, drivers over 1…N: the G162 depth split is the register's: k = ⌊P/Q⌋ full passes, the remainder split at D/2, 3D/4, 7D/8, D each rounded once half up (a target not deeper dropped), last exactly at P, the pass count.",
-        checked_by: CheckedBy::Kani,
+        statement: "The G162 depth split is the register's: k = ⌊P/Q⌋ full passes, the remainder split at D/2, 3D/4, 7D/8, D each rounded once half up (a target not deeper dropped), last exactly at P, the pass count.",
+        checked_by: CheckedBy::Drivers,
     },
     Property {
         harness: "g162_variable_pitch",
