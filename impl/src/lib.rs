@@ -32,13 +32,20 @@ pub mod config;
 mod emit;
 pub mod fixed;
 pub mod g162;
-mod g90;
+/// Public (hidden) only so that the proof harnesses (`cycle-proofs`) can drive one G90/G94 cycle
+/// below the lexer; not part of the API.
+#[doc(hidden)]
+#[allow(clippy::new_without_default)]
+pub mod g90;
 mod g92;
 pub mod lex;
 mod modal;
 mod multipass;
 pub mod number;
-mod pullout;
+/// Public (hidden) only so that the proof harnesses (`cycle-proofs`) can check the G92 pull-out
+/// amounts and geometry below the lexer; not part of the API.
+#[doc(hidden)]
+pub mod pullout;
 mod run;
 pub mod schedule;
 mod thread_move;

@@ -1,4 +1,4 @@
-//! Harness `expander_never_panics` — COM.POINTS, COM.RANGES, PRJ.MAXPASS (and G76.PATH,
+//! TEST `expander_never_panics` (driver-only: not a Kani proof) — COM.POINTS, COM.RANGES, PRJ.MAXPASS (and G76.PATH,
 //! G92.PATH, PRJ.TRACE): the production expander on small symbolic programs.
 //!
 //! **Programs.** One cycle, written as text from drawn values into a fixed 256-byte buffer
@@ -31,7 +31,10 @@
 //! - Thread moves carry the programmed lead and a start angle below 360°.
 //! - The tool ends where it started (G76.PATH, G92.PATH: every pass returns to A).
 //!
-//! **Kani bounds** ([`KANI`]): lengths ≤ 9 increments, leads ≤ 9 counts, `max_passes` ≤ 3,
+//! **Not a Kani proof.** Kani 0.61.0 / CBMC 6.4.0 ran out of memory in symbolic execution (issue #25): the symbolic program text makes the lexer's loops (comment, digit runs, blanks) unroll to the bound. No entry below the lexer reaches the G92/G76/G78 state machines (`modal` and `emit` are private), so this stays a TEST; `g90_envelope` is the Kani envelope proof below the lexer for G90/G94. The body runs under `cargo test` (bounded-exhaustive and random
+//! drivers); the scope named `KANI` below is what a Kani run would take, kept for the drivers.
+//!
+//! **Former Kani bounds** ([`KANI`]): lengths ≤ 9 increments, leads ≤ 9 counts, `max_passes` ≤ 3,
 //! L ≤ 2, m ≤ 2; the program is at most [`KANI_PROGRAM`] = 110 bytes (checked by the body in
 //! every driver). Loops: the lexer's byte loops ≤ 111, our event loop ≤ 7·3 + 2 = 23, digit loops
 //! ≤ 20, the switch-pass search ≤ 33, the root's walk ≤ 4 (`isqrt` is loop-free), the
@@ -335,15 +338,6 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     Ok(())
 }
 
-/// Kani: every program of the [`KANI`] scope. Unwind 112: the program is ≤ 110 bytes (the
-/// lexer's loops run ≤ 111 times); the event loop ≤ 23, the pass-count search ≤ 34, digit
-/// loops ≤ 20.
-#[cfg(kani)]
-#[kani::proof]
-#[kani::unwind(112)]
-fn expander_never_panics() {
-    let _ = body(&mut crate::source::KaniSource, &KANI);
-}
 
 #[cfg(test)]
 mod tests {

@@ -1,4 +1,4 @@
-//! Harness `no_overflow_isqrt_tan` — COM.RANGES (and the rounding of COM.UNITS, G76.INFEED.Z,
+//! TEST `no_overflow_isqrt_tan` (driver-only: not a Kani proof) — COM.RANGES (and the rounding of COM.UNITS, G76.INFEED.Z,
 //! G76.PULLOUT, COM.MULTISTART): the fixed-point helpers of `cycle_impl::fixed` never panic
 //! and meet their specifications.
 //!
@@ -25,7 +25,10 @@
 //! entry against the tangent addition formula from its neighbour, in exact interval arithmetic,
 //! chained from 0° to 45° = 1 and on to 89°; and against `f64::tan`.
 //!
-//! **Kani bounds.** `isqrt` is core's loop-free staged root; our 256-bit helpers loop at most 4
+//! **Not a Kani proof.** Kani 0.61.0 / CBMC 6.4.0 reached no verdict in 600 s (3 M variables, 20.7 M clauses; issue #25): every branch checks a nonlinear specification (r² ≤ n, q·den, δ·tan) of up to 128-bit values. (`depth_step_clamp` keeps a Kani stub of `isqrt` by its specification for a next attempt.) The body runs under `cargo test` (bounded-exhaustive and random
+//! drivers); the scope named `KANI` below is what a Kani run would take, kept for the drivers.
+//!
+//! **Former Kani bounds.** `isqrt` is core's loop-free staged root; our 256-bit helpers loop at most 4
 //! times. `#[kani::unwind(65)]`.
 
 use crate::model::{is_div_round, is_sqrt_round, W256};
@@ -177,14 +180,6 @@ pub fn body<S: Source>(src: &mut S) -> Outcome {
     Ok(())
 }
 
-/// Kani: every helper over its whole input type (the tangent over every legal length and
-/// angle). Unwind 65: `isqrt` is loop-free, the 256-bit helpers loop ≤ 4 times.
-#[cfg(kani)]
-#[kani::proof]
-#[kani::unwind(65)]
-fn no_overflow_isqrt_tan() {
-    let _ = body(&mut crate::source::KaniSource);
-}
 
 #[cfg(test)]
 mod tests {

@@ -1,4 +1,4 @@
-//! Harness `g162_variable_pitch` — G162.I, G162.J, G162.F (with G162.PQ, G162.SPLIT, G162.PATH,
+//! TEST `g162_variable_pitch` (driver-only: not a Kani proof) — G162.I, G162.J, G162.F (with G162.PQ, G162.SPLIT, G162.PATH,
 //! PRJ.TRACE).
 //!
 //! **Property.** For a G162 block `G162 X Z H [P Q] F I [J]` under `nc201` with any F (1…Fmax),
@@ -16,7 +16,10 @@
 //! - and the pass headers' depths strictly increase, never pass P, end exactly at P (0 for a
 //!   single pass); each thread cuts at X0 − 2s·depth to Ze; the tool ends at the start point.
 //!
-//! **Kani bounds** ([`KANI`]): lengths (thread gap, Z travel, P, Q) ≤ 9 increments, H ≤ 99
+//! **Not a Kani proof.** Kani 0.61.0 / CBMC 6.4.0 ran out of memory in symbolic execution (issue #25): the symbolic program text unrolls the lexer's loops. The body runs under `cargo test` (bounded-exhaustive and random
+//! drivers); the scope named `KANI` below is what a Kani run would take, kept for the drivers.
+//!
+//! **Former Kani bounds** ([`KANI`]): lengths (thread gap, Z travel, P, Q) ≤ 9 increments, H ≤ 99
 //! counts; F, I, J, the grid, the side and the start point (within ±(N − 100)) symbolic over
 //! their full ranges. At most 13 passes (P/Q ≤ 9, plus four split passes), so ≤ 1 + 13·6 events:
 //! the event loop runs ≤ 80 times. The program is ≤ 110 bytes (checked): `#[kani::unwind(112)]`
@@ -213,14 +216,6 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     Ok(())
 }
 
-/// Kani: the variable pitch over the [`KANI`] scope. Unwind 112: the program is ≤ 110 bytes
-/// (lexer loops ≤ 111), the event loop ≤ 81, digit loops ≤ 20, the configuration check 16.
-#[cfg(kani)]
-#[kani::proof]
-#[kani::unwind(112)]
-fn g162_variable_pitch() {
-    let _ = body(&mut crate::source::KaniSource, &KANI);
-}
 
 #[cfg(test)]
 mod tests {

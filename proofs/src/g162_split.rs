@@ -1,4 +1,4 @@
-//! Harness `g162_split_exact` — G162.PQ, G162.SPLIT, PRJ.MAXPASS.
+//! TEST `g162_split_exact` (driver-only: not a Kani proof) — G162.PQ, G162.SPLIT, PRJ.MAXPASS.
 //!
 //! **Property.** For all legal P (thread depth) and Q (allowance), 1…N each, N = 999 999 999,
 //! the production split `cycle_impl::g162::{first, next, pass_count}` is the register's
@@ -16,7 +16,12 @@
 //!   there, `None` after it), and the split cuts sum exactly to D (every split cut ≥ 1);
 //! - `pass_count(p, limit)` is k + (kept targets) when that is ≤ `limit`, else `None`.
 //!
-//! **Kani bounds.** All symbolic over the full legal ranges (P, Q, n, `limit`). The only loops
+//! **Not a Kani proof (yet).** Over the full ranges Kani 0.61.0 / CBMC 6.4.0 reached no verdict
+//! in 1 289 s (issue #25). The bounded scope [`KANI`] below was prepared but not run to a verdict
+//! in this session, so the Kani wrapper is not committed.
+//!
+//! **Intended Kani bounds.** P, Q ≤ 2^12 − 1 ([`KANI`]; n and `limit` symbolic over their whole ranges);
+//! the drivers sample the full legal ranges ([`FULL`]). The only loops
 //! are the tail iteration (≤ 5), the model's four targets and the production's four targets
 //! (`split_after`, `pass_count`): `#[kani::unwind(6)]`.
 
@@ -33,8 +38,14 @@ pub struct Scope {
     pub max_len: i64,
 }
 
-/// What Kani proves: the full legal ranges.
-pub const KANI: Scope = Scope { max_len: MAX_LENGTH };
+/// What the drivers sample: the full legal ranges.
+pub const FULL: Scope = Scope { max_len: MAX_LENGTH };
+
+/// What Kani proves: P, Q ≤ 2^12 − 1 (a bounded proof: 1.7·10^7 pairs, every full pass n and
+/// every limit symbolic). The full ranges are left to the drivers: checking ⌊P/Q⌋ and n·Q of
+/// 30-bit words against the model bit-blasts to nonlinear equivalences (two dividers, two
+/// multipliers) that did not finish in 1 289 s (issue #25).
+pub const KANI: Scope = Scope { max_len: (1 << 12) - 1 };
 
 /// The register's split, computed independently of `cycle-impl`.
 pub mod model {
@@ -179,14 +190,6 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     Ok(())
 }
 
-/// Kani: the split over the full legal ranges, every full pass by induction, the tail whole.
-/// Unwind 6: the tail loop ≤ 5, the four targets of model and production.
-#[cfg(kani)]
-#[kani::proof]
-#[kani::unwind(6)]
-fn g162_split_exact() {
-    let _ = body(&mut crate::source::KaniSource, &KANI);
-}
 
 #[cfg(test)]
 mod tests {
@@ -219,13 +222,13 @@ mod tests {
     /// The edges of the legal ranges.
     #[test]
     fn g162_split_exact_exhaustive_edges() {
-        let r = exhaustive(4, 1_000_000, |s| body(s, &KANI)).assert_ok();
+        let r = exhaustive(4, 1_000_000, |s| body(s, &FULL)).assert_ok();
         println!("{r}");
     }
 
     #[test]
     fn g162_split_exact_random() {
-        let r = random(0x5eed_0162, random_cases(2), |s| body(s, &KANI)).assert_ok();
+        let r = random(0x5eed_0162, random_cases(2), |s| body(s, &FULL)).assert_ok();
         println!("{r}");
     }
 }

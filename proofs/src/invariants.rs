@@ -50,7 +50,7 @@ pub fn run<S: Source>(name: &str, src: &mut S) -> Option<Outcome> {
         "depth_step_monotone" => depth_step_monotone::body(src, &Production, &depth_step_monotone::FULL),
         "depth_bounds" => depth_bounds::body(src, &Production, &SEQUENCE),
         "trace_depths" => trace_depths::body(src),
-        "g162_split_exact" => g162_split::body(src, &g162_split::KANI),
+        "g162_split_exact" => g162_split::body(src, &g162_split::FULL),
         "g162_variable_pitch" => g162_pitch::body(src, &g162_pitch::KANI),
         _ => return None,
     })

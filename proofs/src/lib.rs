@@ -15,12 +15,17 @@ pub mod schedule;
 
 pub mod depth_bounds;
 pub mod depth_step_monotone;
+pub mod depth_step_clamp;
 pub mod fixed_point;
 pub mod mutation;
 pub mod expander_envelope;
 pub mod g92_pullout;
 pub mod g162_split;
 pub mod g162_pitch;
+pub mod g90_envelope;
+pub mod g92_pullout_geometry;
+#[cfg(not(kani))]
+pub mod schedule_spec;
 
 pub mod invariants;
 pub mod trace_depths;

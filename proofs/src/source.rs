@@ -4,8 +4,8 @@
 //! [`random`] drivers — lives in `cycle-harness`, shared with the `impl_invariants` fuzz target
 //! and the replay of its regressions; it is re-exported here. Kani's symbolic source is here,
 //! next to the `kani` dependency: under Kani, `check!` is `kani::assert` with a literal message
-//! and each draw of [`KaniSource`] is `kani::any` + `kani::assume`, so one run of the body covers
-//! every value.
+//! and each draw of [`KaniSource`] is `kani::any` + `kani::assume` (an offset from the low end,
+//! in the narrowest type that holds the range), so one run of the body covers every value.
 
 pub use cycle_harness::{
     exhaustive, random, random_cases, Exhaustive, Failure, Outcome, Random, Report, Source, Stop, DEFAULT_RANDOM_CASES,
@@ -14,6 +14,27 @@ pub use cycle_harness::{
 /// Symbolic values under Kani.
 #[cfg(kani)]
 pub struct KaniSource;
+
+/// A symbolic offset in `0..=span`, drawn in the narrowest unsigned type that holds `span`.
+/// `span` is a constant of the harness's scope, so the choice of type is made before the
+/// solver runs, and every bit above the type's width is a constant 0: products and quotients
+/// of small ranges bit-blast to small circuits instead of full 64- or 128-bit ones.
+#[cfg(kani)]
+fn offset(span: u128) -> u128 {
+    let v = if span <= u128::from(u8::MAX) {
+        u128::from(kani::any::<u8>())
+    } else if span <= u128::from(u16::MAX) {
+        u128::from(kani::any::<u16>())
+    } else if span <= u128::from(u32::MAX) {
+        u128::from(kani::any::<u32>())
+    } else if span <= u128::from(u64::MAX) {
+        u128::from(kani::any::<u64>())
+    } else {
+        kani::any::<u128>()
+    };
+    kani::assume(v <= span);
+    v
+}
 
 #[cfg(kani)]
 impl Source for KaniSource {
@@ -24,21 +45,16 @@ impl Source for KaniSource {
     }
 
     fn bounded_i64(&mut self, lo: i64, hi: i64) -> i64 {
-        let v: i64 = kani::any();
-        kani::assume(lo <= v && v <= hi);
-        v
+        // hi − lo < 2^64 and the sum lies in lo..=hi: no overflow in i128.
+        (i128::from(lo) + offset(hi.abs_diff(lo).into()) as i128) as i64
     }
 
     fn bounded_u64(&mut self, lo: u64, hi: u64) -> u64 {
-        let v: u64 = kani::any();
-        kani::assume(lo <= v && v <= hi);
-        v
+        (u128::from(lo) + offset((hi - lo).into())) as u64
     }
 
     fn bounded_u32(&mut self, lo: u32, hi: u32) -> u32 {
-        let v: u32 = kani::any();
-        kani::assume(lo <= v && v <= hi);
-        v
+        (u128::from(lo) + offset((hi - lo).into())) as u32
     }
 
     fn any_u128(&mut self) -> u128 {

@@ -9,7 +9,7 @@
 //! `assume(bool)`, `assert(bool, &'static str)`, `cover!(cond, "msg")`, `#[kani::proof]`,
 //! `#[kani::unwind(n)]`.
 
-pub use kani_stub_macros::{proof, unwind};
+pub use kani_stub_macros::{proof, stub, unwind};
 
 /// Types that have a symbolic (here: a default concrete) value.
 pub trait Arbitrary: Sized {
