@@ -28,6 +28,7 @@ pub mod emit;
 pub mod exact;
 pub mod family;
 pub mod g162;
+pub mod g50;
 pub mod g90;
 pub mod g94;
 pub mod g92;
@@ -38,6 +39,7 @@ pub mod pullout;
 pub mod single_cut;
 pub mod tangent;
 pub mod thread_moves;
+pub mod tnrc;
 pub mod words;
 
 use cycle_vocab::text::Trace;
@@ -52,9 +54,10 @@ pub fn expand(program: &[u8], config: &Config) -> Trace {
         return Trace { grid: config.grid, events: Vec::new(), alarm: Some(a) };
     }
     let mut alarm = None;
-    for block in lex::blocks(program) {
+    let mut src = family::Source::new(program);
+    while let Some(block) = src.next_block() {
         let result = match block {
-            Ok(b) => machine.block(&b),
+            Ok(b) => machine.block(&b, &mut src),
             Err(a) => Err(a),
         };
         match result {
@@ -77,3 +80,5 @@ mod tests_g162;
 mod tests_g90;
 #[cfg(test)]
 mod tests_lex;
+#[cfg(test)]
+mod tests_m003_words;
