@@ -23,6 +23,7 @@
 //! | [`emit`] | PRJ.TRACE, PRJ.NOOP, COM.MULTISTART |
 #![forbid(unsafe_code)]
 
+pub mod arc;
 pub mod config;
 pub mod emit;
 pub mod exact;
@@ -74,6 +75,8 @@ pub fn expand(program: &[u8], config: &Config) -> Trace {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_arc;
 #[cfg(test)]
 mod tests_g162;
 #[cfg(test)]

@@ -24,6 +24,8 @@ use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Rule, Units};
 enum Motion {
     G00,
     G01,
+    /// G02 (clockwise) or G03: ARC.DIR.
+    Arc { cw: bool },
     /// A modal family's code: the family's index in the table and the code.
     Family(usize, u32),
 }
@@ -33,6 +35,8 @@ enum Motion {
 enum Code {
     G00,
     G01,
+    /// G02 (clockwise) or G03.
+    Arc { cw: bool },
     /// A family's code: the family's index in the table and the code.
     Family(usize, u32),
 }
@@ -75,8 +79,9 @@ impl<'c> Machine<'c> {
         // The block's kind: its written code, else the modal motion mode.
         let code = codes.first().copied().unwrap_or(self.modal_code());
         two_motion_codes(b, dialect, codes.len())?;
-        self.side = tnrc::check(b, false, self.side, self.st.params().nose_radius)?;
-        conflicts(b, dialect, self.thread_block(code))?;
+        let writes_arc = codes.iter().any(|c| matches!(c, Code::Arc { .. }));
+        self.side = tnrc::check(b, writes_arc, self.side, self.st.params().nose_radius)?;
+        conflicts(b, dialect, self.thread_block(code), matches!(code, Code::Arc { .. }))?;
         let words = self.words(b, code);
         words_allowed(b, &words)?;
         let values = self.values(b, &words)?;
@@ -93,6 +98,10 @@ impl<'c> Machine<'c> {
             }
             Code::G01 => self.linear(b, true, &values)?,
             Code::G00 => self.linear(b, false, &values)?,
+            Code::Arc { cw } => {
+                self.motion = Motion::Arc { cw };
+                crate::arc::block(&mut self.st, &values, cw, has_axis(b), b.line)?;
+            }
         }
         Ok(end)
     }
@@ -102,6 +111,7 @@ impl<'c> Machine<'c> {
         match self.motion {
             Motion::G00 => Code::G00,
             Motion::G01 => Code::G01,
+            Motion::Arc { cw } => Code::Arc { cw },
             Motion::Family(index, g) => Code::Family(index, g),
         }
     }
@@ -131,6 +141,9 @@ impl<'c> Machine<'c> {
             let code = match g {
                 0 => Some(Code::G00),
                 1 => Some(Code::G01),
+                // ARC.FORMAT (M003): arcs are codes of `gsk` and `fanuc`.
+                2 | 3 if nc201 => return Err(alarm(AlarmCode::UnsupportedCode, b'G', Rule::PrjDialect, line)),
+                2 | 3 => Some(Code::Arc { cw: g == 2 }),
                 90 | 91 if nc201 => None,
                 g => match self.family_of(g) {
                     Some((index, c)) if c.dialects.contains(&config.dialect) => Some(Code::Family(index, c.g)),
@@ -174,7 +187,7 @@ impl<'c> Machine<'c> {
     fn thread_block(&self, code: Code) -> bool {
         match code {
             Code::Family(index, _) => self.families[index].thread(),
-            Code::G00 | Code::G01 => false,
+            Code::G00 | Code::G01 | Code::Arc { .. } => false,
         }
     }
 
@@ -183,6 +196,7 @@ impl<'c> Machine<'c> {
         let dialect = self.st.config.dialect;
         match code {
             Code::Family(index, g) => self.families[index].words(kind_of(b, g), dialect),
+            Code::Arc { .. } => crate::arc::WORDS,
             _ if dialect == Dialect::Nc201 => LINEAR_NC201,
             _ => LINEAR,
         }
@@ -290,10 +304,11 @@ fn two_motion_codes(b: &Block, dialect: Dialect, motion_codes: usize) -> Result<
     Ok(())
 }
 
-/// COM.ABSINC, COM.LEAD (M001, M002): X with U; Z with W; F with I in a thread block (G92, G76,
-/// G78, G32, G33, G34, written or modal), where I is threads per inch. Under `nc201` U, W and I
-/// are no incremental or lead addresses, so the pair conflicts do not exist there.
-fn conflicts(b: &Block, dialect: Dialect, thread: bool) -> Result<(), Alarm> {
+/// COM.ABSINC, COM.LEAD (M001, M002), ARC.FORMAT (M003): X with U; Z with W; in an arc block
+/// (G02/G03, written or modal) R with I or K (`CONFLICT` on R); F with I in a thread block
+/// (G92, G76, G78, G32, G33, G34, written or modal), where I is threads per inch. Under `nc201`
+/// U, W and I are no incremental or lead addresses, so the pair conflicts do not exist there.
+fn conflicts(b: &Block, dialect: Dialect, thread: bool, arc: bool) -> Result<(), Alarm> {
     let line = b.line;
     if dialect == Dialect::Nc201 {
         return Ok(());
@@ -303,6 +318,9 @@ fn conflicts(b: &Block, dialect: Dialect, thread: bool) -> Result<(), Alarm> {
     }
     if b.has(b'Z') && b.has(b'W') {
         return Err(alarm(AlarmCode::Conflict, b'W', Rule::ComAbsInc, line));
+    }
+    if arc && b.has(b'R') && (b.has(b'I') || b.has(b'K')) {
+        return Err(alarm(AlarmCode::Conflict, b'R', Rule::ArcFormat, line));
     }
     if thread && b.has(b'F') && b.has(b'I') {
         return Err(alarm(AlarmCode::Conflict, b'I', Rule::ComLead, line));

@@ -69,7 +69,7 @@ fn spindle_and_feed_modes_change_no_geometry() {
 #[test]
 fn new_codes_under_nc201() {
     let nc = Config { dialect: Dialect::Nc201, ..Config::default() };
-    for g in ["G41", "G42", "G50 X1", "G96 S1", "G98"] {
+    for g in ["G02 X1 Z1 R1 F1", "G3 X1 Z1 R1 F1", "G41", "G42", "G50 X1", "G96 S1", "G98"] {
         assert_eq!(alarm_of(g, &nc), (AlarmCode::UnsupportedCode, Some('G'), Rule::PrjDialect, 1), "{g}");
     }
     assert_eq!(expand(b"G40 G0 X1\n", &nc).alarm, None);
@@ -82,6 +82,12 @@ fn nose_radius_codes() {
     let with = moves(&run("G41 G1 X10 Z-5 F0.2\nZ-10\nG40 X20\n"));
     let without = moves(&run("G1 X10 Z-5 F0.2\nZ-10\nX20\n"));
     assert_eq!(with, without);
+    // TNRC.NOARC: a compensation code in a block that writes G02/G03.
+    assert_eq!(alarm_of("G1 F1\nG41 G02 X1 Z-1 R1", &c), (AlarmCode::Conflict, Some('G'), Rule::TnrcNoarc, 2));
+    assert_eq!(alarm_of("G40 G3 X1 Z-1 R1 F1", &c), (AlarmCode::Conflict, Some('G'), Rule::TnrcNoarc, 1));
+    // NOARC is checked after the two-motion-codes conflict; an arc mode only modal is no arc written.
+    assert_eq!(alarm_of("G40 G1 G2 X1", &c), (AlarmCode::Conflict, Some('G'), Rule::PrjWord, 1));
+    assert_eq!(run("G02 F1\nG41\nG40").alarm, None);
     // TNRC.SWITCH: a side change without G40, and a tool call with compensation on.
     assert_eq!(alarm_of("G41\nG42", &c), (AlarmCode::WordNotAllowed, Some('G'), Rule::TnrcSwitch, 2));
     assert_eq!(alarm_of("G42\nG41 X1", &c), (AlarmCode::WordNotAllowed, Some('G'), Rule::TnrcSwitch, 2));
