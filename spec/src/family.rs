@@ -134,6 +134,9 @@ pub fn table() -> Vec<Box<dyn Family>> {
         Box::new(crate::g90::G90::default()),
         Box::new(crate::g94::G94::default()),
         Box::new(crate::g50::G50),
+        Box::new(crate::g70::G70),
+        Box::new(crate::g71::G71::default()),
+        Box::new(crate::g72::G72::default()),
     ]
 }
 
@@ -164,6 +167,8 @@ pub struct State<'c> {
     pub feed: Option<i64>,
     /// NC201.ABSINC: G91 (X and Z are distances from the position before the block).
     pub incremental: bool,
+    /// TNRC.CODES: the nose-radius compensation in force.
+    pub side: crate::tnrc::Side,
 }
 
 impl State<'_> {

@@ -45,8 +45,6 @@ enum Code {
 pub struct Machine<'c> {
     pub st: State<'c>,
     motion: Motion,
-    /// The nose-radius compensation in force (TNRC.CODES).
-    side: Side,
     families: Vec<Box<dyn Family>>,
 }
 
@@ -62,8 +60,9 @@ const LINEAR_NC201: Words = Words::of(&[F, X, Z]);
 impl<'c> Machine<'c> {
     /// PRJ.MODAL (PRJ): the machine starts at the configured start point, in G00, with no feed.
     pub fn new(config: &'c Config) -> Machine<'c> {
-        let st = State { config, out: Out::new(config.start_x, config.start_z), feed: None, incremental: false };
-        Machine { st, motion: Motion::G00, side: Side::Off, families: family::table() }
+        let out = Out::new(config.start_x, config.start_z);
+        let st = State { config, out, feed: None, incremental: false, side: Side::Off };
+        Machine { st, motion: Motion::G00, families: family::table() }
     }
 
     /// The trace built so far.
@@ -80,7 +79,7 @@ impl<'c> Machine<'c> {
         let code = codes.first().copied().unwrap_or(self.modal_code());
         two_motion_codes(b, dialect, codes.len())?;
         let writes_arc = codes.iter().any(|c| matches!(c, Code::Arc { .. }));
-        self.side = tnrc::check(b, writes_arc, self.side, self.st.params().nose_radius)?;
+        self.st.side = tnrc::check(b, writes_arc, self.st.side, self.st.params().nose_radius)?;
         conflicts(b, dialect, self.thread_block(code), matches!(code, Code::Arc { .. }))?;
         let words = self.words(b, code);
         words_allowed(b, &words)?;
