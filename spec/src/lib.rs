@@ -90,6 +90,8 @@ mod tests_arc;
 #[cfg(test)]
 mod tests_g162;
 #[cfg(test)]
+mod tests_g71;
+#[cfg(test)]
 mod tests_g90;
 #[cfg(test)]
 mod tests_lex;
