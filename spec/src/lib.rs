@@ -88,6 +88,8 @@ mod tests;
 #[cfg(test)]
 mod tests_arc;
 #[cfg(test)]
+mod tests_contour;
+#[cfg(test)]
 mod tests_g162;
 #[cfg(test)]
 mod tests_g71;
