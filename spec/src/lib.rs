@@ -99,3 +99,5 @@ mod tests_g90;
 mod tests_lex;
 #[cfg(test)]
 mod tests_m003_words;
+#[cfg(test)]
+mod tests_props;
