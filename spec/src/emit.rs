@@ -59,6 +59,16 @@ impl Out {
         self.go(MoveKind::Feed, x, z, feed, 0, rule, line)
     }
 
+    /// An arc at `feed` to `end` about `centre` (ARC.DIR: clockwise for G02, else G03), both
+    /// absolute, X on diameter. Its start is the current position; it is never a no-op (a
+    /// full circle is an alarm, ARC.TOL).
+    pub fn arc(&mut self, cw: bool, end: (i128, i128), centre: (i128, i128), feed: i64, rule: Rule, line: u32) -> Result<(), Alarm> {
+        let (x, z) = (coordinate(end.0, b'X', line)?, coordinate(end.1, b'Z', line)?);
+        let (cx, cz) = (coordinate(centre.0, b'X', line)?, coordinate(centre.1, b'Z', line)?);
+        self.push(Move::arc(cw, x, z, cx, cz, feed, rule));
+        Ok(())
+    }
+
     /// A spindle-synchronized move (`G32`) with `lead` and start `angle` (0.001°).
     pub fn thread(&mut self, x: i128, z: i128, lead: i64, angle: u32, rule: Rule, line: u32) -> Result<(), Alarm> {
         self.go(MoveKind::Thread, x, z, lead, angle, rule, line)

@@ -1,6 +1,6 @@
 //! Executable reference spec of the lathe canned cycles: the thread cycles G92 (M002), G76
-//! (M001, M003 FANUC-style), G78 (M000) and G162 (M004), the thread moves G32, G33, G34 and the
-//! single cutting cycles G90, G94 (M003).
+//! (M001, M003 FANUC-style), G78 (M000) and G162 (M004), the thread moves G32, G33, G34, the
+//! single cutting cycles G90, G94, arcs G02/G03 and the contour cycles G70, G71, G72 (M003).
 //!
 //! A certification reference: clarity first, exact integer arithmetic, each rule a small
 //! function whose doc comment names its rule ID (`docs/RULES.md`) and source manual key. Every
@@ -20,14 +20,25 @@
 //! | [`g162`] | G162.* (M004, `nc201`), NC201.* in [`program`] |
 //! | [`thread_moves`] | G32, G33, G34 (M003) |
 //! | [`g90`], [`g94`], [`single_cut`] | G90.*, G94.* (M003): single cutting cycles and their runs |
+//! | [`g50`], [`tnrc`] | G50.COORD, G50.SMAX; TNRC.* (M003): the program words of the contour cycles |
+//! | [`arc`] | ARC.* (M003): G02/G03, their centres, the tolerance, the sweep |
+//! | [`contour`] | CNT.* (M003): finding, checking and running the contour N(ns) … N(nf) |
+//! | [`g70`] | G70.* (M003): finishing |
+//! | [`g71`], [`g72`], [`stock_removal`] | G71.*, G72.* (M003): stock removal in layers |
 //! | [`emit`] | PRJ.TRACE, PRJ.NOOP, COM.MULTISTART |
 #![forbid(unsafe_code)]
 
+pub mod arc;
 pub mod config;
+pub mod contour;
 pub mod emit;
 pub mod exact;
 pub mod family;
 pub mod g162;
+pub mod g50;
+pub mod g70;
+pub mod g71;
+pub mod g72;
 pub mod g90;
 pub mod g94;
 pub mod g92;
@@ -36,8 +47,10 @@ pub mod multipass;
 pub mod program;
 pub mod pullout;
 pub mod single_cut;
+pub mod stock_removal;
 pub mod tangent;
 pub mod thread_moves;
+pub mod tnrc;
 pub mod words;
 
 use cycle_vocab::text::Trace;
@@ -52,9 +65,10 @@ pub fn expand(program: &[u8], config: &Config) -> Trace {
         return Trace { grid: config.grid, events: Vec::new(), alarm: Some(a) };
     }
     let mut alarm = None;
-    for block in lex::blocks(program) {
+    let mut src = family::Source::new(program);
+    while let Some(block) = src.next_block() {
         let result = match block {
-            Ok(b) => machine.block(&b),
+            Ok(b) => machine.block(&b, &mut src),
             Err(a) => Err(a),
         };
         match result {
@@ -72,8 +86,18 @@ pub fn expand(program: &[u8], config: &Config) -> Trace {
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
+mod tests_arc;
+#[cfg(test)]
+mod tests_contour;
+#[cfg(test)]
 mod tests_g162;
+#[cfg(test)]
+mod tests_g71;
 #[cfg(test)]
 mod tests_g90;
 #[cfg(test)]
 mod tests_lex;
+#[cfg(test)]
+mod tests_m003_words;
+#[cfg(test)]
+mod tests_props;
