@@ -110,6 +110,17 @@ impl Block {
         })
     }
 
+    /// Whether this block *is N(p)* (CNT.RANGE, "Sequence numbers"): its N word's exact value
+    /// equals `p` — `N50`, `N050`, `N+50`, `N50.0` are N50; `N-50`, `N50.5` and a block without
+    /// N are not.
+    pub fn is_sequence(&self, p: u64) -> bool {
+        let Some(n) = self.get(b'N') else {
+            return false;
+        };
+        // N = mantissa · 10^-decimals equals p exactly when mantissa = p · 10^decimals.
+        !n.negative && crate::number::pow10(u32::from(n.decimals)).and_then(|s| p.checked_mul(s)) == Some(n.mantissa)
+    }
+
     fn is_empty(&self) -> bool {
         self.g_count == 0 && self.present == 0
     }

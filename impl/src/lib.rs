@@ -224,3 +224,6 @@ mod front_tests;
 
 #[cfg(test)]
 mod g90_tests;
+
+#[cfg(test)]
+mod program_tests;

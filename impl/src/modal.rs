@@ -42,6 +42,27 @@ enum Kind {
     Thread(ThreadCode),
     G162,
     Cut(CutCode),
+    /// G50 (G50.COORD): set the current position.
+    G50,
+}
+
+/// TNRC.CODES: the nose-radius compensation in force (G40 none, G41 left, G42 right).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Comp {
+    Off,
+    Left,
+    Right,
+}
+
+/// What step (2) found in a block's G and M codes.
+#[derive(Clone, Copy, Debug)]
+struct Codes {
+    /// The block's motion/cycle code, if any.
+    motion: Option<u64>,
+    /// M02 or M30: nothing after this block is read.
+    end: bool,
+    /// NC201.ABSINC: G90 (`Some(false)`) or G91 (`Some(true)`) under nc201.
+    absinc: Option<bool>,
 }
 
 /// The machine state carried from block to block.
@@ -64,6 +85,8 @@ pub struct Machine {
     g78: FirstBlock,
     /// NC201.ABSINC: G91 in force (`nc201` only).
     incremental: bool,
+    /// TNRC.CODES: the nose-radius compensation in force.
+    comp: Comp,
 }
 
 /// The converted words of one block; `None` where absent.
@@ -113,6 +136,8 @@ fn allowed(kind: Kind, dialect: Dialect) -> u32 {
         (Kind::First(_), Dialect::Gsk | Dialect::Nc201) => const { letter_mask(b"DELPQR") },
         (Kind::Second(_), Dialect::Fanuc) => const { letter_mask(b"FIPQRUWXZ") },
         (Kind::Second(_), Dialect::Gsk | Dialect::Nc201) => const { letter_mask(b"FIJKPQRUWXZ") },
+        // G50.COORD: X and Z, absolute only (S is common).
+        (Kind::G50, _) => const { letter_mask(b"XZ") },
     }
 }
 
@@ -134,6 +159,7 @@ impl Machine {
             g76: FirstBlock::defaults(&params, Code::G76),
             g78: FirstBlock::defaults(&params, Code::G78),
             incremental: false,
+            comp: Comp::Off,
         }
     }
 
@@ -143,7 +169,7 @@ impl Machine {
         *run = Run::Idle;
         let line = b.line;
         let at = |letter: u8| At { letter, line };
-        let (motion, end, absinc) = self.codes(b)?;
+        let Codes { motion, end, absinc } = self.codes(b)?;
         let nc201 = self.config.dialect == Dialect::Nc201;
         let axis = if nc201 {
             b.has(b'X') || b.has(b'Z')
@@ -162,6 +188,7 @@ impl Machine {
             Some(162) => Kind::G162,
             Some(90) => Kind::Cut(CutCode::G90),
             Some(94) => Kind::Cut(CutCode::G94),
+            Some(50) => Kind::G50,
             Some(1) => Kind::Feed,
             Some(_) => Kind::Rapid,
             None => match self.mode {
@@ -219,14 +246,16 @@ impl Machine {
             }
             Kind::G162 => self.g162(&v, line, run)?,
             Kind::Cut(code) => self.cut(code, motion.is_some(), &v, axis, line, run)?,
+            Kind::G50 => self.g50(&v),
         }
         Ok(end)
     }
 
-    /// (2) PRJ.SUPPORTED, PRJ.DIALECT, COM.UNITS, PRJ.WORD, NC201.ABSINC: the G codes in the
-    /// order written, then M; the block's motion/cycle code, whether it ends the program, and
-    /// its G90 (`Some(false)`) / G91 (`Some(true)`) under nc201.
-    fn codes(&self, b: &Block) -> Result<(Option<u64>, bool, Option<bool>), Alarm> {
+    /// (2) PRJ.SUPPORTED, PRJ.DIALECT, COM.UNITS, PRJ.WORD, NC201.ABSINC, TNRC.*: the G codes in
+    /// the order written, then M, then two motion/cycle codes, G90 with G91 (nc201), then the
+    /// nose-radius rules — TNRC.NOARC, TNRC.SWITCH (G, then T), TNRC.RADIUS — which update the
+    /// compensation in force.
+    fn codes(&mut self, b: &Block) -> Result<Codes, Alarm> {
         let line = b.line;
         let g_alarm = |code: AlarmCode, rule: Rule| Alarm::new(code, Some(b'G'), rule, line);
         let dialect = self.config.dialect;
@@ -235,6 +264,7 @@ impl Machine {
         let mut motions = 0u32;
         let mut absinc = None;
         let mut absincs = 0u32;
+        let mut tnrc = false;
         for g in b.g_codes() {
             if g.point || g.negative {
                 return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjSupported));
@@ -243,11 +273,17 @@ impl Machine {
                 0 | 1 => {}
                 // M003 / M001 / M002 codes are not defined for the M004 controller, and G162 only
                 // for it (PRJ.DIALECT).
-                92 | 76 | 32 | 33 | 34 | 90 | 94 if !nc201 => {}
+                92 | 76 | 32 | 33 | 34 | 90 | 94 | 50 if !nc201 => {}
                 78 if dialect == Dialect::Gsk => {}
                 162 if nc201 => {}
-                // Under nc201 G90 is the absolute mode (below) and G94 is not defined.
-                32 | 33 | 34 | 76 | 78 | 92 | 94 | 162 => {
+                40..=42 | 96 | 98 if !nc201 => {
+                    tnrc |= matches!(g.mantissa, 40..=42);
+                    continue;
+                }
+                // Under nc201 G90 is the absolute mode (below) and G94 is not defined; nor are the
+                // codes of the contour cycles (M003).
+                32 | 33 | 34 | 76 | 78 | 92 | 94 | 162 => return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjDialect)),
+                2 | 3 | 41 | 42 | 50 | 70 | 71 | 72 | 96 | 98 if nc201 => {
                     return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjDialect))
                 }
                 90 | 91 if nc201 => {
@@ -285,7 +321,43 @@ impl Machine {
         if absincs > 1 {
             return Err(g_alarm(AlarmCode::Conflict, Rule::Nc201AbsInc));
         }
-        Ok((motion, end, absinc))
+        if tnrc || b.has(b'T') {
+            self.compensation(b, motion)?;
+        }
+        Ok(Codes { motion, end, absinc })
+    }
+
+    /// TNRC.NOARC, TNRC.SWITCH, TNRC.RADIUS (check step 2, after the two-motion-codes conflict):
+    /// G40/G41/G42 with G02/G03; G41 while G42 is in force or G42 while G41 is (the codes taken in
+    /// the order written); a T word after which G41 or G42 is still in force; G41/G42 with a
+    /// nose radius. The compensation in force is updated.
+    fn compensation(&mut self, b: &Block, motion: Option<u64>) -> Result<(), Alarm> {
+        let g_alarm = |code: AlarmCode, rule: Rule| Alarm::new(code, Some(b'G'), rule, b.line);
+        let codes = || b.g_codes().iter().map(|g| g.mantissa).filter(|m| matches!(m, 40..=42));
+        if matches!(motion, Some(2 | 3)) && codes().next().is_some() {
+            return Err(g_alarm(AlarmCode::Conflict, Rule::TnrcNoarc));
+        }
+        let mut comp = self.comp;
+        let mut side = false;
+        for code in codes() {
+            comp = match (code, comp) {
+                (41, Comp::Right) | (42, Comp::Left) => {
+                    return Err(g_alarm(AlarmCode::WordNotAllowed, Rule::TnrcSwitch))
+                }
+                (41, _) => Comp::Left,
+                (42, _) => Comp::Right,
+                _ => Comp::Off,
+            };
+            side |= code != 40;
+        }
+        if b.has(b'T') && comp != Comp::Off {
+            return Err(Alarm::new(AlarmCode::WordNotAllowed, Some(b'T'), Rule::TnrcSwitch, b.line));
+        }
+        if side && self.params.nose_radius != 0 {
+            return Err(g_alarm(AlarmCode::Unsupported, Rule::TnrcRadius));
+        }
+        self.comp = comp;
+        Ok(())
     }
 
     /// COM.ABSINC: the end point from X(U), Z(W): U and W are added to the position `from`; an
@@ -340,5 +412,11 @@ impl Machine {
             return Ok(Some(Move::feed(x, z, f, Rule::PrjModal)));
         }
         Ok(Some(Move::rapid(x, z, Rule::PrjModal)))
+    }
+
+    /// G50.COORD: X and Z make the current position (work coordinates from now on); an omitted
+    /// axis keeps its value. No motion, no event; the motion mode and any run go on.
+    fn g50(&mut self, v: &Vals) {
+        self.pos = (v.x.unwrap_or(self.pos.0), v.z.unwrap_or(self.pos.1));
     }
 }

@@ -36,7 +36,7 @@ const POW10: [u64; 20] = [
 ];
 
 /// 10^`e`, when it fits a `u64`.
-fn pow10(e: u32) -> Option<u64> {
+pub fn pow10(e: u32) -> Option<u64> {
     POW10.get(usize::try_from(e).ok()?).copied()
 }
 
