@@ -28,6 +28,7 @@
     )
 )]
 
+pub mod arc;
 pub mod config;
 mod emit;
 pub mod fixed;
@@ -227,3 +228,6 @@ mod g90_tests;
 
 #[cfg(test)]
 mod program_tests;
+
+#[cfg(test)]
+mod arc_tests;

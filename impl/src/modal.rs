@@ -29,6 +29,8 @@ pub enum Mode {
     Thread(ThreadCode),
     /// G90, G94 (G90.MODAL, G94.MODAL).
     Cut(CutCode),
+    /// G02 (clockwise, `true`), G03 (ARC.DIR).
+    Arc(bool),
 }
 
 /// How the block's words are read (its code, or the modal mode).
@@ -44,6 +46,8 @@ enum Kind {
     Cut(CutCode),
     /// G50 (G50.COORD): set the current position.
     G50,
+    /// G02 (`true`) / G03 (ARC.FORMAT).
+    Arc(bool),
 }
 
 /// TNRC.CODES: the nose-radius compensation in force (G40 none, G41 left, G42 right).
@@ -114,6 +118,8 @@ struct Vals {
     v: Option<i64>,
     /// G90 I (radius) or G94 K: the taper.
     taper: Option<i64>,
+    /// Arc I (radius, increments); its K is `k`, its R `r`.
+    i: Option<i64>,
 }
 
 /// Words every block accepts (no motion effect).
@@ -138,6 +144,7 @@ fn allowed(kind: Kind, dialect: Dialect) -> u32 {
         (Kind::Second(_), Dialect::Gsk | Dialect::Nc201) => const { letter_mask(b"FIJKPQRUWXZ") },
         // G50.COORD: X and Z, absolute only (S is common).
         (Kind::G50, _) => const { letter_mask(b"XZ") },
+        (Kind::Arc(_), _) => const { letter_mask(b"FIKRUWXZ") },
     }
 }
 
@@ -189,6 +196,8 @@ impl Machine {
             Some(90) => Kind::Cut(CutCode::G90),
             Some(94) => Kind::Cut(CutCode::G94),
             Some(50) => Kind::G50,
+            Some(2) => Kind::Arc(true),
+            Some(3) => Kind::Arc(false),
             Some(1) => Kind::Feed,
             Some(_) => Kind::Rapid,
             None => match self.mode {
@@ -197,6 +206,7 @@ impl Machine {
                 Mode::G92 => Kind::G92,
                 Mode::Thread(code) => Kind::Thread(code),
                 Mode::Cut(code) => Kind::Cut(code),
+                Mode::Arc(cw) => Kind::Arc(cw),
             },
         };
         // (2) conflicts: X/U, Z/W, and F/I in a thread block, where I is threads per inch (the
@@ -212,6 +222,10 @@ impl Machine {
             if !nc201 && applies && b.has(first) && b.has(second) {
                 return Err(at(second).alarm(AlarmCode::Conflict, rule));
             }
+        }
+        // ARC.FORMAT: R with I or K in an arc block.
+        if matches!(kind, Kind::Arc(_)) && b.has(b'R') && (b.has(b'I') || b.has(b'K')) {
+            return Err(at(b'R').alarm(AlarmCode::Conflict, Rule::ArcFormat));
         }
         if let Some(incremental) = absinc {
             // NC201.ABSINC: modal, in force from the block that writes it.
@@ -247,6 +261,9 @@ impl Machine {
             Kind::G162 => self.g162(&v, line, run)?,
             Kind::Cut(code) => self.cut(code, motion.is_some(), &v, axis, line, run)?,
             Kind::G50 => self.g50(&v),
+            Kind::Arc(cw) => {
+                *run = self.arc(cw, motion.is_some(), &v, axis, line)?.map_or(Run::Idle, Run::Move);
+            }
         }
         Ok(end)
     }
@@ -271,6 +288,7 @@ impl Machine {
             }
             match g.mantissa {
                 0 | 1 => {}
+                2 | 3 if !nc201 => {}
                 // M003 / M001 / M002 codes are not defined for the M004 controller, and G162 only
                 // for it (PRJ.DIALECT).
                 92 | 76 | 32 | 33 | 34 | 90 | 94 | 50 if !nc201 => {}

@@ -26,6 +26,10 @@ impl Machine {
         }
         match (kind, letter) {
             (_, b'F') => v.lead = Some(lead_f(n, grid, at)?),
+            // ARC.FORMAT: I (radius) and K signed lengths; ARC.R: R a length 1 … N.
+            (Kind::Arc(_), b'I') => v.i = Some(signed_length(n, grid, at)?),
+            (Kind::Arc(_), b'K') => v.k = Some(signed_length(n, grid, at)?),
+            (Kind::Arc(_), b'R') => v.r = Some(scaled_in(n, grid.decimals(), 1, MAX_LENGTH, Rule::ArcR, at)?),
             // NC201.XMODE: X of G00/G01 by `x_radius`.
             (_, b'X') if self.config.dialect == Dialect::Nc201 => v.x = Some(self.x_word(n, at)?),
             // G90.FORMAT, G94.FORMAT: the taper, a signed length (I is no lead here).
