@@ -30,7 +30,9 @@
 
 pub mod arc;
 pub mod config;
+pub mod contour;
 mod emit;
+mod finish;
 pub mod fixed;
 pub mod g162;
 mod g90;
@@ -40,11 +42,13 @@ mod modal;
 mod multipass;
 pub mod number;
 mod pullout;
+mod rough;
 mod run;
 pub mod schedule;
 mod thread_move;
 mod words;
 
+use contour::Contour;
 use cycle_vocab::{Alarm, Config, Event};
 use lex::{Block, Blocks};
 
@@ -70,6 +74,18 @@ pub struct Expander<'a> {
     done: bool,
     /// An alarm that [`Expander::fill`] met after writing events, returned by the next call.
     pending: Option<Alarm>,
+    /// The contour of the G70/G71/G72 cycle being carried out (CNT.MAX: at most
+    /// [`contour::MAX_BLOCKS`] elements, 48 000 bytes, initialised on first use). It lives here,
+    /// outside [`Run`], so that it is written once, in place, by the contour reader and never
+    /// copied: `Run` is moved by value; the running cycle keeps only its cursor.
+    contour: Contour,
+}
+
+/// What the block interpreter may read besides the block: the program's reader (a G71/G72 reads
+/// its contour ahead; a G70 reads the text again from its start) and the contour buffer.
+pub(crate) struct Program<'p, 'a> {
+    pub blocks: &'p mut Blocks<'a>,
+    pub contour: &'p mut Contour,
 }
 
 impl<'a> Expander<'a> {
@@ -83,6 +99,7 @@ impl<'a> Expander<'a> {
             ended: false,
             done: false,
             pending: None,
+            contour: Contour::new(),
         }
     }
 
@@ -107,7 +124,7 @@ impl<'a> Expander<'a> {
                 // The hot path, inlined here: a G92/G76/G78 cycle writes whole starts.
                 Run::Multipass(c) => c.fill(pos, rest),
                 Run::Idle => (0, false),
-                other => other.fill(pos, rest),
+                other => other.fill(pos, rest, &self.contour),
             };
             if written != 0 || done {
                 n += written;
@@ -173,7 +190,7 @@ impl Expander<'_> {
             }
         }
         loop {
-            if let Some(e) = self.run.next_event(&mut self.machine.pos) {
+            if let Some(e) = self.run.next_event(&mut self.machine.pos, &self.contour) {
                 return Some(Ok(e));
             }
             self.run = Run::Idle;
@@ -209,7 +226,8 @@ impl Expander<'_> {
             self.done = true;
             return Ok(false);
         }
-        self.ended = self.machine.block(&self.block, &mut self.run)?;
+        let mut program = Program { blocks: &mut self.blocks, contour: &mut self.contour };
+        self.ended = self.machine.block(&self.block, &mut self.run, &mut program)?;
         Ok(true)
     }
 }
@@ -231,3 +249,6 @@ mod program_tests;
 
 #[cfg(test)]
 mod arc_tests;
+
+#[cfg(test)]
+mod contour_tests;

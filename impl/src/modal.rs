@@ -9,8 +9,11 @@ use crate::g90::{CutCode, CutState};
 use crate::g92::{G92State, PullMemo};
 use crate::lex::{letter_bit, letter_mask, Block};
 use crate::multipass::{Code, FirstBlock};
+use crate::rough::Axis;
 use crate::run::Run;
 use crate::thread_move::ThreadCode;
+use crate::Program;
+use contour_blocks::FirstValues;
 use crate::words::At;
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Move, Rule, Units};
 
@@ -18,6 +21,8 @@ use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Move, Rule, Units};
 mod cycles;
 #[path = "modal_values.rs"]
 mod values;
+#[path = "modal_contour.rs"]
+mod contour_blocks;
 
 /// The modal motion mode.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -48,6 +53,11 @@ enum Kind {
     G50,
     /// G02 (`true`) / G03 (ARC.FORMAT).
     Arc(bool),
+    /// G70 (G70.FORMAT).
+    G70,
+    /// G71/G72 without P and Q (Δd, e), and with them (G71.UW).
+    RoughFirst(Axis),
+    RoughSecond(Axis),
 }
 
 /// TNRC.CODES: the nose-radius compensation in force (G40 none, G41 left, G42 right).
@@ -91,6 +101,9 @@ pub struct Machine {
     incremental: bool,
     /// TNRC.CODES: the nose-radius compensation in force.
     comp: Comp,
+    /// G71.PARAM: the values of the last G71 and G72 first blocks.
+    g71: FirstValues,
+    g72: FirstValues,
 }
 
 /// The converted words of one block; `None` where absent.
@@ -120,6 +133,8 @@ struct Vals {
     taper: Option<i64>,
     /// Arc I (radius, increments); its K is `k`, its R `r`.
     i: Option<i64>,
+    /// Δd of a G71 (U) or G72 (W) first block; its e is `r`.
+    depth: Option<i64>,
 }
 
 /// Words every block accepts (no motion effect).
@@ -145,6 +160,10 @@ fn allowed(kind: Kind, dialect: Dialect) -> u32 {
         // G50.COORD: X and Z, absolute only (S is common).
         (Kind::G50, _) => const { letter_mask(b"XZ") },
         (Kind::Arc(_), _) => const { letter_mask(b"FIKRUWXZ") },
+        // G70.FORMAT, G71.FORMAT, G72.FORMAT.
+        (Kind::G70 | Kind::RoughSecond(_), _) => const { letter_mask(b"FPQUW") },
+        (Kind::RoughFirst(Axis::G71), _) => const { letter_mask(b"RU") },
+        (Kind::RoughFirst(Axis::G72), _) => const { letter_mask(b"RW") },
     }
 }
 
@@ -167,12 +186,14 @@ impl Machine {
             g78: FirstBlock::defaults(&params, Code::G78),
             incremental: false,
             comp: Comp::Off,
+            g71: FirstValues { depth: params.p5132_rough_depth, retract: params.p5133_rough_retract },
+            g72: FirstValues { depth: params.p5132_rough_depth, retract: params.p5133_rough_retract },
         }
     }
 
     /// Reads one block: writes what it asks of the expander into `run` (in place: a cycle
     /// is not copied on its way out) and returns whether it ends the program (M02, M30).
-    pub fn block(&mut self, b: &Block, run: &mut Run) -> Result<bool, Alarm> {
+    pub fn block(&mut self, b: &Block, run: &mut Run, prog: &mut Program<'_, '_>) -> Result<bool, Alarm> {
         *run = Run::Idle;
         let line = b.line;
         let at = |letter: u8| At { letter, line };
@@ -196,6 +217,12 @@ impl Machine {
             Some(90) => Kind::Cut(CutCode::G90),
             Some(94) => Kind::Cut(CutCode::G94),
             Some(50) => Kind::G50,
+            Some(70) => Kind::G70,
+            // G71.UW: a block with P or Q is the second block.
+            Some(71) if b.has(b'P') || b.has(b'Q') => Kind::RoughSecond(Axis::G71),
+            Some(71) => Kind::RoughFirst(Axis::G71),
+            Some(72) if b.has(b'P') || b.has(b'Q') => Kind::RoughSecond(Axis::G72),
+            Some(72) => Kind::RoughFirst(Axis::G72),
             Some(2) => Kind::Arc(true),
             Some(3) => Kind::Arc(false),
             Some(1) => Kind::Feed,
@@ -264,6 +291,9 @@ impl Machine {
             Kind::Arc(cw) => {
                 *run = self.arc(cw, motion.is_some(), &v, axis, line)?.map_or(Run::Idle, Run::Move);
             }
+            Kind::G70 => self.g70(&v, line, run, prog)?,
+            Kind::RoughFirst(code) => self.rough_first(code, &v),
+            Kind::RoughSecond(code) => self.rough_second(code, &v, line, run, prog)?,
         }
         Ok(end)
     }
@@ -291,7 +321,7 @@ impl Machine {
                 2 | 3 if !nc201 => {}
                 // M003 / M001 / M002 codes are not defined for the M004 controller, and G162 only
                 // for it (PRJ.DIALECT).
-                92 | 76 | 32 | 33 | 34 | 90 | 94 | 50 if !nc201 => {}
+                92 | 76 | 32 | 33 | 34 | 90 | 94 | 50 | 70 | 71 | 72 if !nc201 => {}
                 78 if dialect == Dialect::Gsk => {}
                 162 if nc201 => {}
                 40..=42 | 96 | 98 if !nc201 => {

@@ -36,7 +36,7 @@ const POW10: [u64; 20] = [
 ];
 
 /// 10^`e`, when it fits a `u64`.
-pub fn pow10(e: u32) -> Option<u64> {
+fn pow10(e: u32) -> Option<u64> {
     POW10.get(usize::try_from(e).ok()?).copied()
 }
 
@@ -74,6 +74,12 @@ impl Number {
         };
         let v = i64::try_from(m).map_err(|_| NumberError::Overflow)?;
         Ok(if self.negative { -v } else { v })
+    }
+
+    /// Whether the number's exact value is `p` (`50`, `050`, `+50`, `50.0` are 50; `-50`, `50.5`
+    /// are not): mantissa = p · 10^decimals.
+    pub fn is(self, p: u64) -> bool {
+        !self.negative && pow10(u32::from(self.decimals)).and_then(|s| p.checked_mul(s)) == Some(self.mantissa)
     }
 
     /// The number as an integer; an error when written with a decimal point.
