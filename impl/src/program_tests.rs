@@ -121,3 +121,25 @@ fn new_codes_under_nc201() {
     let f = Config { dialect: Dialect::Fanuc, ..Config::default() };
     assert_eq!(expand("G50 X1 Z1\nG96 S100\nG98\nG41\nG40\n", f).alarm, None);
 }
+
+/// "The configuration is checked before the first block": 5132 outside 1…N, 5133 outside 0…N
+/// (G71.PARAM), arc_tolerance outside 0…N (ARC.TOL), nose_radius outside 0…N (TNRC.RADIUS),
+/// each OUT OF RANGE on line 0 without a word, in that order.
+#[test]
+fn contour_parameters_are_checked() {
+    let with = |p: Params| expand("G0 X1", Config { params: p, ..Config::default() }).alarm;
+    let out = |rule: Rule| Some(Alarm::new(AlarmCode::OutOfRange, None, rule, 0));
+    let d = Params::default();
+    assert_eq!(with(Params { p5132_rough_depth: Some(0), ..d }), out(Rule::G71Param));
+    assert_eq!(with(Params { p5132_rough_depth: Some(1_000_000_000), ..d }), out(Rule::G71Param));
+    assert_eq!(with(Params { p5133_rough_retract: Some(-1), ..d }), out(Rule::G71Param));
+    assert_eq!(with(Params { p5133_rough_retract: Some(0), ..d }), None);
+    assert_eq!(with(Params { arc_tolerance: Some(-1), ..d }), out(Rule::ArcTol));
+    assert_eq!(with(Params { arc_tolerance: Some(1_000_000_000), ..d }), out(Rule::ArcTol));
+    assert_eq!(with(Params { nose_radius: Some(-1), ..d }), out(Rule::TnrcRadius));
+    assert_eq!(
+        with(Params { p5133_rough_retract: Some(-1), arc_tolerance: Some(-1), nose_radius: Some(-1), ..d }),
+        out(Rule::G71Param)
+    );
+    assert_eq!(with(Params { arc_tolerance: Some(-1), nose_radius: Some(-1), ..d }), out(Rule::ArcTol));
+}
