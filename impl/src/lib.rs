@@ -1,5 +1,6 @@
 //! Production expander of the lathe thread cycles G92, G76, G78, FANUC-style G76 and G162
-//! (`nc201`), of the thread moves G32, G33, G34 and of the single cutting cycles G90, G94.
+//! (`nc201`), of the thread moves G32, G33, G34, of the single cutting cycles G90, G94, of arcs
+//! G02/G03 and of the contour cycles G70, G71, G72 (M003).
 //!
 //! `no_std`, no heap, no floating point, no `unsafe`, no panics: [`Expander`] is a streaming
 //! iterator over the trace events of a program (PRJ.TRACE), computed on the integer grid with
@@ -13,7 +14,21 @@
 //! enum of everything that runs, dispatched by [`Expander`]), `g92`, `multipass` (G76/G78),
 //! `pullout`, `emit` (the per-pass move state machine of G92/G76/G78), [`g162`] (depth split,
 //! checks and its own move state machine), `thread_move` (G32/G33/G34), `g90` (G90/G94),
-//! `config`.
+//! [`arc`] (G02/G03: centres, tolerance, sweeps, exact roundings), [`contour`] (the contour
+//! buffer, CNT.FIND for G70), `rough` (G71/G72: checks, layer count, layers, semi-finish pass),
+//! `finish` (G70), `config`.
+//!
+//! **Memory.** An [`Expander`] holds the block being read (~0.5 KB), the machine state, what
+//! runs, and the contour buffer of the contour cycles: [`contour::MAX_BLOCKS`] (CNT.MAX,
+//! 1 000) elements of 48 bytes, 48 000 bytes, initialised on the first contour cycle (a
+//! program without one writes none of it). Nothing else grows with the program.
+//!
+//! **Magnitudes.** Every word and parameter is at most N = 999 999 999 < 2^30 increments
+//! (COM.RANGES) and the start point too, so a block moves the machine by at most N from where it
+//! stands (an absolute word puts it within N of 0; a cycle returns to its start after excursions
+//! below 2^52): after B blocks every position is below (B + 1)·N, under 2^61 for any program of
+//! fewer than 2^31 blocks (over 20 GB of text). The arithmetic is written, and its bounds proved
+//! in each module, for positions below 2^62; beyond, it saturates (never wraps, never panics).
 #![no_std]
 #![forbid(unsafe_code)]
 #![cfg_attr(

@@ -37,6 +37,9 @@ use crate::emit::emit;
 use crate::fixed::{div_round_signed, sat};
 use cycle_vocab::{Alarm, AlarmCode, Event, Move, Pass, PassKind, Rule};
 
+/// The most events of one layer: its header and four moves.
+const LAYER_EVENTS: usize = 5;
+
 /// Which cycle: the axis of the cut.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Axis {
@@ -386,9 +389,54 @@ impl Roughing {
         }
     }
 
+    /// Writes the next events into `out`, the same events as [`Roughing::next_event`]: a whole
+    /// layer (its header and up to four moves) at a time while one fits, each event built where
+    /// it is kept, else one event at a time. Returns how many were written and whether the
+    /// cycle is done.
+    pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event], contour: &Contour) -> (usize, bool) {
+        let mut n = 0;
+        loop {
+            if self.phase == Phase::Layer && self.step_no == 0 {
+                if let Some(slots) = out.get_mut(n..).and_then(|r| r.first_chunk_mut::<LAYER_EVENTS>()) {
+                    n += self.write_layer(pos, slots, contour);
+                    continue;
+                }
+            }
+            let Some(slot) = out.get_mut(n) else {
+                return (n, false);
+            };
+            match self.next_event(pos, contour) {
+                Some(e) => {
+                    *slot = e;
+                    n += 1;
+                }
+                None => return (n, true),
+            }
+        }
+    }
+
+    /// The events of one whole layer into `slots` (the header, then the moves that move);
+    /// returns how many.
+    #[inline(always)]
+    fn write_layer(&mut self, pos: &mut (i64, i64), slots: &mut [Event; LAYER_EVENTS], contour: &Contour) -> usize {
+        let mut n = 0;
+        for _ in 0..LAYER_EVENTS {
+            let e = match self.layer_step(contour) {
+                Some(Event::Move(m)) => emit(m, pos),
+                other => other,
+            };
+            if let (Some(e), Some(slot)) = (e, slots.get_mut(n)) {
+                *slot = e;
+                n += 1;
+            }
+        }
+        n
+    }
+
     /// One step of the current layer: ① infeed along a to a_k in the ns block's mode, ② the cut
     /// at feed to b_k (G71.LAYER), ③ the 45° retract at feed, ④ the rapid back to A.b
     /// (G71.RETRACT); the pass header first.
+    #[inline(always)]
     fn layer_step(&mut self, contour: &Contour) -> Option<Event> {
         let rules = self.axis.rules();
         let ak = self.layer_at(self.k);

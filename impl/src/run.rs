@@ -62,7 +62,7 @@ impl Run {
             Run::Multipass(c) => c.fill(pos, out),
             Run::G162(c) => fill_each(out, || c.next_event(pos)),
             Run::Cut(c) => fill_each(out, || c.next_event(pos)),
-            Run::Rough(c) => fill_each(out, || c.next_event(pos, contour)),
+            Run::Rough(c) => c.fill(pos, out, contour),
             Run::Finish(c) => fill_each(out, || c.next_event(pos, contour)),
             Run::Move(m) => {
                 let m = *m;
