@@ -870,6 +870,12 @@ fn assert_fill_agrees(program: &str, config: Config, sizes: &[usize]) {
 
 #[test]
 fn fill_equals_the_iterator() {
+    // Every buffer size from 1 to one more than the whole stream.
+    for program in [EXAMPLE_1, EXAMPLE_2] {
+        let events = Expander::new(program.as_bytes(), Config::default()).count();
+        let sizes: Vec<usize> = (1..=events + 1).collect();
+        assert_fill_agrees(program, Config::default(), &sizes);
+    }
     let sizes: Vec<usize> = (1..=40).chain([64, 100, 1_000, 4_096]).collect();
     for program in [
         EXAMPLE_1,
