@@ -360,3 +360,37 @@ fn corpus_command_reports_every_program() {
     assert_eq!(v["programs"][0]["name"], "g92_example");
     assert_eq!(v["programs"][0]["rules"][0], "G92.EXAMPLE");
 }
+
+/// No silent limit: a program of 700 000 modal G92 repeats — 4 200 007 events, past the 4 000 000
+/// at which the production expander's trace used to be cut — expands whole with the production
+/// expander (every pass printed), and `diff` finds both engines agree (exit 0).
+#[test]
+fn a_trace_of_millions_of_events_is_never_cut() {
+    use std::io::Read as _;
+    let repeats = 700_000;
+    let mut program = b"G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\n".to_vec();
+    program.extend(b"X58.7\n".repeat(repeats));
+    let p = TempFile::new("g92_repeats.nc", &program);
+    let o = run(&["diff", p.path()]);
+    assert_eq!(code(&o), 0, "{}{}", stdout(&o), stderr(&o));
+    assert_eq!(stdout(&o), format!("conform: {} events\n", 6 * (repeats + 1) + 1));
+    let mut child = Command::new(env!("CARGO_BIN_EXE_cyclecheck"))
+        .args(["expand", p.path(), "--engine", "impl"])
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdout = child.stdout.take().unwrap();
+    let (mut passes, mut buf, mut carry) = (0usize, vec![0u8; 1 << 16], Vec::new());
+    loop {
+        let n = stdout.read(&mut buf).unwrap();
+        if n == 0 {
+            break;
+        }
+        carry.extend_from_slice(&buf[..n]);
+        let end = carry.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1);
+        passes += carry[..end].split(|&b| b == b'\n').filter(|l| l.starts_with(b"(PASS ")).count();
+        carry.drain(..end);
+    }
+    assert_eq!(child.wait().unwrap().code(), Some(0));
+    assert_eq!(passes, repeats + 1, "every pass of every cycle is printed");
+}

@@ -165,6 +165,7 @@ pub struct ExpandArgs {
     /// The engine: the reference spec or the production expander.
     #[arg(long, value_enum, default_value_t = EngineArg::Spec)]
     pub engine: EngineArg,
+    /// Canonical expanded G-code, or the trace as JSON (as the candidate protocol answers it).
     #[arg(long, value_enum, default_value_t = FormatArg::Gcode)]
     pub format: FormatArg,
     #[command(flatten)]
@@ -176,6 +177,7 @@ pub struct DiffArgs {
     /// Program files; - reads standard input (once).
     #[arg(value_name = "FILE", required = true)]
     pub files: Vec<String>,
+    /// The report per file: text (gcode), or one JSON object per line.
     #[arg(long, value_enum, default_value_t = FormatArg::Gcode)]
     pub format: FormatArg,
     #[command(flatten)]
@@ -186,6 +188,7 @@ pub struct DiffArgs {
 
 #[derive(Args, Debug)]
 pub struct CorpusArgs {
+    /// One line per program and a summary, or one JSON document.
     #[arg(long, value_enum, default_value_t = CorpusFormat::Text)]
     pub format: CorpusFormat,
 }
