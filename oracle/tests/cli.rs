@@ -237,28 +237,25 @@ fn help_states_the_true_defaults() {
     use cycle_oracle::candidate::Limits;
     use cycle_oracle::{certify, gate, nightly};
     let help = |c: &str| stdout(&run(&[c, "--help"])).split_whitespace().collect::<Vec<_>>().join(" ");
-    let certify_help = help("certify");
-    for (option, default) in [
-        ("--out <DIR>", certify::DEFAULT_OUT.to_string()),
-        ("--timeout-ms <MS>", Limits::DEFAULT_TIMEOUT_MS.to_string()),
-        ("--max-output <BYTES>", Limits::DEFAULT_MAX_OUTPUT.to_string()),
-        ("--max-failures <N>", certify::DEFAULT_MAX_FAILURES.to_string()),
-        ("--cases <N>", certify::DEFAULT_CASES.to_string()),
-        ("--seed <S>", certify::DEFAULT_SEED.to_string()),
+    // The default `--help` states for `option`.
+    let stated = |help: &str, option: &str| -> Option<String> {
+        let after = help.split(option).nth(1).unwrap_or_else(|| panic!("{option} missing: {help}"));
+        after.split("[default: ").nth(1).and_then(|d| d.split(']').next()).map(str::to_string)
+    };
+    let (certify_help, gate_help) = (help("certify"), help("gate"));
+    for (help, option, default) in [
+        (&certify_help, "--out <DIR>", certify::DEFAULT_OUT.to_string()),
+        (&certify_help, "--timeout-ms <MS>", Limits::DEFAULT_TIMEOUT_MS.to_string()),
+        (&certify_help, "--max-output <BYTES>", Limits::DEFAULT_MAX_OUTPUT.to_string()),
+        (&certify_help, "--max-failures <N>", certify::DEFAULT_MAX_FAILURES.to_string()),
+        (&certify_help, "--cases <N>", certify::DEFAULT_CASES.to_string()),
+        (&certify_help, "--seed <S>", certify::DEFAULT_SEED.to_string()),
+        (&gate_help, "--cases <N>", gate::DEFAULT_CASES.to_string()),
+        (&gate_help, "--seed <S>", gate::DEFAULT_SEED.to_string()),
+        (&gate_help, "--test-cases <N>", gate::DEFAULT_TEST_CASES.to_string()),
+        (&gate_help, "--proof-cases <N>", gate::DEFAULT_PROOF_CASES.to_string()),
     ] {
-        let after = certify_help.split(option).nth(1).unwrap_or_else(|| panic!("{option} missing: {certify_help}"));
-        let stated = after.split("[default: ").nth(1).and_then(|d| d.split(']').next());
-        assert_eq!(stated, Some(default.as_str()), "certify {option}");
-    }
-    let gate_help = help("gate");
-    for (option, default) in [
-        ("--cases <N>", gate::DEFAULT_CASES.to_string()),
-        ("--seed <S>", gate::DEFAULT_SEED.to_string()),
-        ("--test-cases <N>", gate::DEFAULT_TEST_CASES.to_string()),
-        ("--proof-cases <N>", gate::DEFAULT_PROOF_CASES.to_string()),
-    ] {
-        let after = gate_help.split(option).nth(1).unwrap_or_else(|| panic!("{option} missing: {gate_help}"));
-        assert_eq!(after.split("[default: ").nth(1).and_then(|d| d.split(']').next()), Some(default.as_str()), "gate {option}");
+        assert_eq!(stated(help, option), Some(default), "{option} in\n{help}");
     }
     let fuzz_help = help("fuzz");
     assert!(fuzz_help.contains(&format!("[default: {}]", nightly::DEFAULT_BUDGET)), "{fuzz_help}");
