@@ -26,6 +26,9 @@ use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
+mod split;
+pub use split::split_command;
+
 /// The protocol's schema version, sent in every request.
 pub const SCHEMA: &str = "cyclecheck-candidate/1";
 
@@ -56,75 +59,6 @@ impl Default for Limits {
     fn default() -> Limits {
         Limits { timeout: Limits::DEFAULT_TIMEOUT, max_output: Limits::DEFAULT_MAX_OUTPUT }
     }
-}
-
-/// Splits a command line into words as a POSIX shell would, without any expansion: blanks
-/// separate words; `'…'` is literal; in `"…"` a backslash escapes `"`, `\`, `$` and `` ` ``;
-/// outside quotes a backslash escapes the next character. No variables, globs, pipes or
-/// redirections: `$`, `*`, `|`, `>` are ordinary characters.
-pub fn split_command(line: &str) -> Result<Vec<String>, String> {
-    let mut words = Vec::new();
-    let mut word = String::new();
-    let mut in_word = false;
-    let mut chars = line.chars();
-    while let Some(c) = chars.next() {
-        match c {
-            ' ' | '\t' | '\n' | '\r' => {
-                if in_word {
-                    words.push(std::mem::take(&mut word));
-                    in_word = false;
-                }
-            }
-            '\'' => {
-                in_word = true;
-                loop {
-                    match chars.next() {
-                        Some('\'') => break,
-                        Some(c) => word.push(c),
-                        None => return Err("unterminated single quote".to_string()),
-                    }
-                }
-            }
-            '"' => {
-                in_word = true;
-                loop {
-                    match chars.next() {
-                        Some('"') => break,
-                        Some('\\') => match chars.next() {
-                            Some(c @ ('"' | '\\' | '$' | '`')) => word.push(c),
-                            Some('\n') => {}
-                            Some(c) => {
-                                word.push('\\');
-                                word.push(c);
-                            }
-                            None => return Err("unterminated double quote".to_string()),
-                        },
-                        Some(c) => word.push(c),
-                        None => return Err("unterminated double quote".to_string()),
-                    }
-                }
-            }
-            '\\' => {
-                in_word = true;
-                match chars.next() {
-                    Some('\n') => {}
-                    Some(c) => word.push(c),
-                    None => return Err("a backslash ends the command".to_string()),
-                }
-            }
-            c => {
-                in_word = true;
-                word.push(c);
-            }
-        }
-    }
-    if in_word {
-        words.push(word);
-    }
-    if words.is_empty() {
-        return Err("empty command".to_string());
-    }
-    Ok(words)
 }
 
 /// The request line for case `id` (without the newline). The program goes as `program` when it
@@ -423,19 +357,6 @@ impl Drop for CandidateEngine {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn splits_like_a_shell_without_expansion() {
-        let s = |l: &str| split_command(l).unwrap();
-        assert_eq!(s("python3 examples/g92.py --plant-bug"), ["python3", "examples/g92.py", "--plant-bug"]);
-        assert_eq!(s("  a\t 'b c'  \"d \\\" e\" f\\ g "), ["a", "b c", "d \" e", "f g"]);
-        assert_eq!(s("echo $HOME * | > x; rm"), ["echo", "$HOME", "*", "|", ">", "x;", "rm"]);
-        assert_eq!(s("'it''s' \"a\\nb\" ''"), ["its", "a\\nb", ""]);
-        assert_eq!(s("x\\\ny"), ["xy"]);
-        for bad in ["", "   ", "'open", "\"open", "trailing\\"] {
-            assert!(split_command(bad).is_err(), "{bad:?}");
-        }
-    }
 
     #[test]
     fn requests_carry_schema_id_program_and_config() {
