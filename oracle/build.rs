@@ -17,6 +17,9 @@
 //! | proof | `proofs/src` |
 //! | fuzz | `fuzz/fuzz_targets`, `oracle/src/fuzzing` |
 
+#[path = "build/identity.rs"]
+mod identity;
+
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -44,6 +47,8 @@ fn main() {
     println!("cargo:rerun-if-changed={}", rules_md.display());
     println!("cargo:rerun-if-changed={}", rule_rs.display());
     println!("cargo:rerun-if-changed=build.rs");
+    println!("cargo:rerun-if-changed=build");
+    identity::emit(&root);
 
     let ids = catalogue_ids(&std::fs::read_to_string(&rules_md).unwrap_or_default());
     let variants = variants(&std::fs::read_to_string(&rule_rs).unwrap_or_default(), &ids);

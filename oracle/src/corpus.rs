@@ -2,6 +2,12 @@
 //! feature (`tests/programs/*.nc`), compiled in, each with the configuration it runs under and
 //! the rule IDs it illustrates.
 //!
+//! A program *illustrates* a rule when running it shows the rule at work, whether or not a move
+//! carries the rule's tag: `g76_example` illustrates G76.DEFAULTS (its second block omits R: i
+//! = 0), G76.FINISH.Z (its two finishing passes at the Z of the last rough one) and PRJ.NOOP (its
+//! last G00 goes where the cycle ended: not emitted). The traceability matrix counts a rule
+//! illustrated by a program that ran and conformed as exercised.
+//!
 //! Configurations follow the files' header comments: `f76_ex1_microns` runs under the `fanuc`
 //! dialect (F76.MICRONS), the G162 programs under `nc201` (M004), the `*_inch` programs in inch
 //! units (they write G20), the rest under the defaults (gsk, metric, ISB, start X0 Z0). The G78 example as printed has infeed mode 05,
@@ -67,13 +73,13 @@ macro_rules! program {
 /// Every built-in program: the manuals' examples first, then the feature programs.
 pub const PROGRAMS: &[Program] = &[
     // The manuals' examples (corpus/).
-    program!("corpus", "g92_example", Gsk, Metric, [G92Example, G92Format, G92Modal, G92Path, G92Pullout]),
-    program!("corpus", "g76_example", Gsk, Metric, [G76Example, G76Format, G76Depth1, G76DepthMin, G76DepthLast, G76Finish, G76Pullout, G76Path]),
+    program!("corpus", "g92_example", Gsk, Metric, [G92Example, G92Format, G92Modal, G92Path, G92Pullout, ComAxes, PrjTrace]),
+    program!("corpus", "g76_example", Gsk, Metric, [G76Example, G76Format, G76Depth1, G76DepthMin, G76DepthLast, G76Finish, G76FinishZ, G76Defaults, G76Pullout, G76Path, PrjNoop]),
     program!("corpus", "g78_example", Gsk, Metric, [G78Example, G78Format, G78Mode], alarm OutOfRange b'P' G78Mode),
     program!("corpus", "f76_ex1", Gsk, Metric, [F76Ex1, F76Format, G76Depth1, G76DepthLast, G76Finish, G76Pullout]),
     program!("corpus", "f76_ex1_microns", Fanuc, Metric, [F76Ex1, F76Microns, PrjDialect, F76Format]),
     program!("corpus", "f76_ex2", Gsk, Metric, [F76Ex2, F76Format, G76Depth1, G76DepthMin, G76DepthLast, G76Finish]),
-    program!("corpus", "g162_cone", Nc201, Metric, [G162F, G162W, G162Pq, G162Path, Nc201XMode]),
+    program!("corpus", "g162_cone", Nc201, Metric, [G162Format, G162F, G162W, G162Pq, G162Path, Nc201XMode]),
     program!("corpus", "g90_example", Gsk, Metric, [G90Example, G90Format, G90Modal, G90Path, G90Taper]),
     program!("corpus", "g94_example", Gsk, Metric, [G94Example, G94Format, G94Modal, G94Path]),
     // One program per feature (tests/programs/).

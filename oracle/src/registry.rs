@@ -12,7 +12,7 @@
 use crate::gen::{self, Builder, Case};
 use cycle_vocab::text::Trace;
 use cycle_spec::lex::{self, Number};
-use cycle_vocab::{Config, Dialect, Rule};
+use cycle_vocab::{Alarm, Config, Dialect, Rule};
 use num_traits::ToPrimitive;
 use proptest::strategy::BoxedStrategy;
 use std::cmp::Ordering;
@@ -248,7 +248,12 @@ impl CycleRun {
 /// The blocks are read with the reference's lexer (`cycle_spec::lex`); this is the one place
 /// that reads them for it.
 pub fn cycle_run(program: &[u8], config: &Config, reference: Option<&Trace>) -> CycleRun {
-    let alarm_line = reference.and_then(|t| t.alarm).map(|a| a.line);
+    cycle_run_until(program, config, reference.and_then(|t| t.alarm.as_ref()))
+}
+
+/// [`cycle_run`] knowing only the reference's alarm (`None`: it ended cleanly or failed).
+pub fn cycle_run_until(program: &[u8], config: &Config, alarm: Option<&Alarm>) -> CycleRun {
+    let alarm_line = alarm.map(|a| a.line);
     for block in lex::blocks(program) {
         let Ok(block) = block else { break };
         if alarm_line.is_some_and(|line| block.line > line) {

@@ -162,7 +162,7 @@ impl Values {
 /// The machine state a family works on (PRJ.MODAL): the trace and position, the modal feed.
 pub struct State<'c> {
     pub config: &'c Config,
-    pub out: Out,
+    pub out: Out<'c>,
     /// The one modal feed / lead value, lead counts (COM.LEAD).
     pub feed: Option<i64>,
     /// NC201.ABSINC: G91 (X and Z are distances from the position before the block).

@@ -53,18 +53,32 @@ pub mod thread_moves;
 pub mod tnrc;
 pub mod words;
 
+use core::ops::ControlFlow;
 use cycle_vocab::text::Trace;
-use cycle_vocab::Config;
+use cycle_vocab::{Alarm, Config, Event};
 
 /// Expands a whole program into its trace. Stops at the first alarm, keeping the events emitted
 /// before it. Never panics; resource use is bounded by the program length and `max_passes`
 /// (PRJ.MAXPASS, checked before any motion of a cycle).
 pub fn expand(program: &[u8], config: &Config) -> Trace {
-    let mut machine = program::Machine::new(config);
+    let mut events = Vec::new();
+    let alarm = expand_into(program, config, &mut |e| {
+        events.push(e);
+        ControlFlow::Continue(())
+    });
+    Trace { grid: config.grid, events, alarm }
+}
+
+/// Expands a program event by event: each event of the trace goes to `sink` as it is
+/// emitted, and the alarm that ends the trace, if any, is returned. Nothing is collected, so
+/// memory does not grow with the trace. When `sink` answers `Break` it gets no further event
+/// and the expansion stops after the block it is in (the result is then `None`, unless that
+/// block itself ended in an alarm).
+pub fn expand_into(program: &[u8], config: &Config, sink: &mut dyn FnMut(Event) -> ControlFlow<()>) -> Option<Alarm> {
     if let Err(a) = config::check(config) {
-        return Trace { grid: config.grid, events: Vec::new(), alarm: Some(a) };
+        return Some(a);
     }
-    let mut alarm = None;
+    let mut machine = program::Machine::new(config, sink);
     let mut src = family::Source::new(program);
     while let Some(block) = src.next_block() {
         let result = match block {
@@ -72,15 +86,12 @@ pub fn expand(program: &[u8], config: &Config) -> Trace {
             Err(a) => Err(a),
         };
         match result {
-            Ok(false) => {}
-            Ok(true) => break, // M02 / M30: nothing after this block is read
-            Err(a) => {
-                alarm = Some(a);
-                break;
-            }
+            Ok(false) if !machine.stopped() => {}
+            Ok(_) => break, // M02 / M30: nothing after this block is read; or the sink stopped
+            Err(a) => return Some(a),
         }
     }
-    Trace { grid: config.grid, events: machine.out().events, alarm }
+    None
 }
 
 #[cfg(test)]

@@ -12,7 +12,7 @@
 //! alphabetical order; (3) each word's value in alphabetical order; (4) missing words and
 //! (5) the cycle's own checks, in the family's handler.
 
-use crate::emit::Out;
+use crate::emit::{Out, Sink};
 use crate::family::{self, BlockIn, Family, Kind, Source, State, Values, Words};
 use crate::lex::{Block, Number};
 use crate::tnrc::{self, Side};
@@ -59,15 +59,15 @@ const LINEAR_NC201: Words = Words::of(&[F, X, Z]);
 
 impl<'c> Machine<'c> {
     /// PRJ.MODAL (PRJ): the machine starts at the configured start point, in G00, with no feed.
-    pub fn new(config: &'c Config) -> Machine<'c> {
-        let out = Out::new(config.start_x, config.start_z);
+    pub fn new(config: &'c Config, sink: Sink<'c>) -> Machine<'c> {
+        let out = Out::new(config.start_x, config.start_z, sink);
         let st = State { config, out, feed: None, incremental: false, side: Side::Off };
         Machine { st, motion: Motion::G00, families: family::table() }
     }
 
-    /// The trace built so far.
-    pub fn out(self) -> Out {
-        self.st.out
+    /// Whether the sink of the trace asked to stop (PRJ.TRACE).
+    pub fn stopped(&self) -> bool {
+        self.st.out.stopped()
     }
 
     /// Executes one block; `src` is the program around it (the contour cycles read from it).

@@ -37,7 +37,7 @@ fn seed() -> [u8; 32] {
 /// program.
 fn conforms(case: &Case) -> Result<(), TestCaseError> {
     let reference = SpecEngine.expand(&case.program, &case.config);
-    let candidate = ImplEngine::default().expand(&case.program, &case.config);
+    let candidate = ImplEngine.expand(&case.program, &case.config);
     conformance::check(&reference, &candidate).map_err(|d| {
         TestCaseError::fail(format!(
             "{d}\n\nprogram ({} family; {:?}, {:?}, start X{} Z{}, {:?}):\n{}",
@@ -94,7 +94,7 @@ fn garbage_gets_the_same_alarm() {
 /// The built-in corpus (what `cyclecheck corpus` runs), through the campaign runner.
 #[test]
 fn corpus_conforms() {
-    let report = campaign::run((&SpecEngine, &ImplEngine::default()), corpus::cases());
+    let report = campaign::run((&SpecEngine, &ImplEngine), corpus::cases());
     let findings: Vec<String> = report.findings.iter().map(ToString::to_string).collect();
     assert!(report.all_conform(), "{}\n\n{}", report.summary(), findings.join("\n\n"));
 }

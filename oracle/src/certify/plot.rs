@@ -173,7 +173,11 @@ pub fn svg(title: &str, config: &Config, reference: &Trace, candidate: Option<&T
         t = escape(title)
     );
     let _ = writeln!(s, r#"<rect width="{WIDTH}" height="{HEIGHT}" fill="white"/>"#);
-    let _ = writeln!(s, r#"<text x="{LEFT}" y="18" font-size="14" font-weight="bold">{}</text>"#, escape(title));
+    let _ = write!(s, r#"<text x="{LEFT}" y="18" font-size="14" font-weight="bold">{}"#, escape(title));
+    if let Some(a) = &reference.alarm {
+        let _ = write!(s, r#"<tspan class="alarm" fill="{DIVERGENT}"> — the trace ends in {}</tspan>"#, escape(&Trace::alarm_line(a)));
+    }
+    s.push_str("</text>\n");
     let _ = writeln!(
         s,
         r##"<text x="{LEFT}" y="34" fill="#444">Z ({unit}) across, X as radius ({unit}) up; axes scaled independently{clip}</text>"##,
@@ -311,7 +315,15 @@ mod tests {
         assert_eq!(svg.matches("class=\"pullout\"").count(), 4, "one pull-out per cycle");
         assert_eq!(svg.matches("class=\"infeed\"").count(), 4, "one infeed point per pass");
         assert!(svg.contains("stroke-dasharray"));
-        assert!(!svg.contains("class=\"divergent\""));
+        assert!(!svg.contains("class=\"divergent\"") && !svg.contains("class=\"alarm\""));
+    }
+
+    #[test]
+    fn a_trace_that_ends_in_an_alarm_says_so() {
+        let p = crate::corpus::find("g78_example").unwrap();
+        let t = cycle_spec::expand(p.text.as_bytes(), &p.config());
+        let svg = svg("g78_example", &p.config(), &t, None, None);
+        assert!(svg.contains("the trace ends in (ALARM 2002 LINE 3 WORD P RULE G78.MODE)"), "{svg}");
     }
 
     #[test]

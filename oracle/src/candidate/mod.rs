@@ -12,16 +12,22 @@
 //! - a timeout, a crash, garbage, an oversized answer become that case's [`Failure`]; the child
 //!   is killed and a fresh one started for the next case, so a campaign always goes on;
 //! - stdin and stdout are served by their own threads, so a child that neither reads nor writes
-//!   cannot block the harness; the last few KiB of its stderr are kept for crash reports.
+//!   cannot block the harness; the last few KiB of its stderr are kept for crash reports;
+//! - the child runs in a process group of its own, killed whole — with anything it started —
+//!   after a failure, at the end of the run and on SIGINT/SIGTERM ([`crate::reaper`]).
 
 use crate::engine::{Engine, Failure, FailureKind};
 use cycle_vocab::text::Trace;
 use cycle_vocab::Config;
 use std::io::{BufRead, BufReader, Read, Write};
+use std::os::unix::process::CommandExt as _;
 use std::process::{Child, ChildStdout, Command, Stdio};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
+
+mod split;
+pub use split::split_command;
 
 /// The protocol's schema version, sent in every request.
 pub const SCHEMA: &str = "cyclecheck-candidate/1";
@@ -42,8 +48,9 @@ pub struct Limits {
 }
 
 impl Limits {
-    /// 10 s per case.
-    pub const DEFAULT_TIMEOUT: Duration = Duration::from_secs(10);
+    /// 10 s per case, in ms.
+    pub const DEFAULT_TIMEOUT_MS: u64 = 10_000;
+    pub const DEFAULT_TIMEOUT: Duration = Duration::from_millis(Limits::DEFAULT_TIMEOUT_MS);
     /// 64 MiB per answer (a trace of ~500 000 events).
     pub const DEFAULT_MAX_OUTPUT: usize = 64 << 20;
 }
@@ -52,75 +59,6 @@ impl Default for Limits {
     fn default() -> Limits {
         Limits { timeout: Limits::DEFAULT_TIMEOUT, max_output: Limits::DEFAULT_MAX_OUTPUT }
     }
-}
-
-/// Splits a command line into words as a POSIX shell would, without any expansion: blanks
-/// separate words; `'…'` is literal; in `"…"` a backslash escapes `"`, `\`, `$` and `` ` ``;
-/// outside quotes a backslash escapes the next character. No variables, globs, pipes or
-/// redirections: `$`, `*`, `|`, `>` are ordinary characters.
-pub fn split_command(line: &str) -> Result<Vec<String>, String> {
-    let mut words = Vec::new();
-    let mut word = String::new();
-    let mut in_word = false;
-    let mut chars = line.chars();
-    while let Some(c) = chars.next() {
-        match c {
-            ' ' | '\t' | '\n' | '\r' => {
-                if in_word {
-                    words.push(std::mem::take(&mut word));
-                    in_word = false;
-                }
-            }
-            '\'' => {
-                in_word = true;
-                loop {
-                    match chars.next() {
-                        Some('\'') => break,
-                        Some(c) => word.push(c),
-                        None => return Err("unterminated single quote".to_string()),
-                    }
-                }
-            }
-            '"' => {
-                in_word = true;
-                loop {
-                    match chars.next() {
-                        Some('"') => break,
-                        Some('\\') => match chars.next() {
-                            Some(c @ ('"' | '\\' | '$' | '`')) => word.push(c),
-                            Some('\n') => {}
-                            Some(c) => {
-                                word.push('\\');
-                                word.push(c);
-                            }
-                            None => return Err("unterminated double quote".to_string()),
-                        },
-                        Some(c) => word.push(c),
-                        None => return Err("unterminated double quote".to_string()),
-                    }
-                }
-            }
-            '\\' => {
-                in_word = true;
-                match chars.next() {
-                    Some('\n') => {}
-                    Some(c) => word.push(c),
-                    None => return Err("a backslash ends the command".to_string()),
-                }
-            }
-            c => {
-                in_word = true;
-                word.push(c);
-            }
-        }
-    }
-    if in_word {
-        words.push(word);
-    }
-    if words.is_empty() {
-        return Err("empty command".to_string());
-    }
-    Ok(words)
 }
 
 /// The request line for case `id` (without the newline). The program goes as `program` when it
@@ -237,10 +175,12 @@ impl Running {
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
             .stderr(Stdio::piped())
+            .process_group(0)
             .spawn()
             .map_err(|e| Failure { kind: FailureKind::Spawn, message: format!("cannot start {:?}: {e}", argv[0]) })?;
+        crate::reaper::register_group(child.id());
         let (Some(mut stdin), Some(stdout), Some(mut stderr_pipe)) = (child.stdin.take(), child.stdout.take(), child.stderr.take()) else {
-            let _ = child.kill();
+            crate::reaper::kill_group(child.id());
             let _ = child.wait();
             return Err(Failure { kind: FailureKind::Spawn, message: "no pipes to the child".to_string() });
         };
@@ -280,10 +220,10 @@ impl Running {
         }
     }
 
-    /// Kills the child (if still running) and reaps it.
+    /// Kills the child's process group (the child and whatever it started) and reaps the child.
     fn stop(mut self) {
         self.requests = None;
-        let _ = self.child.kill();
+        crate::reaper::kill_group(self.child.id());
         let _ = self.child.wait();
     }
 }
@@ -361,7 +301,7 @@ fn crash(running: &mut Running, why: &str) -> Failure {
     let mut status = "still running".to_string();
     for _ in 0..20 {
         if let Ok(Some(s)) = running.child.try_wait() {
-            status = format!("exit {s}");
+            status = s.to_string();
             break;
         }
         std::thread::sleep(Duration::from_millis(10));
@@ -397,7 +337,8 @@ impl Engine for CandidateEngine {
 }
 
 impl Drop for CandidateEngine {
-    /// Closes the child's stdin (its signal to exit), gives it a moment, then kills it.
+    /// Closes the child's stdin (its signal to exit), gives it a moment, then kills its process
+    /// group: the child if it is still running, and whatever it left behind.
     fn drop(&mut self) {
         let state = self.state.get_mut().unwrap_or_else(std::sync::PoisonError::into_inner);
         if let Some(mut r) = state.running.take() {
@@ -416,19 +357,6 @@ impl Drop for CandidateEngine {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn splits_like_a_shell_without_expansion() {
-        let s = |l: &str| split_command(l).unwrap();
-        assert_eq!(s("python3 examples/g92.py --plant-bug"), ["python3", "examples/g92.py", "--plant-bug"]);
-        assert_eq!(s("  a\t 'b c'  \"d \\\" e\" f\\ g "), ["a", "b c", "d \" e", "f g"]);
-        assert_eq!(s("echo $HOME * | > x; rm"), ["echo", "$HOME", "*", "|", ">", "x;", "rm"]);
-        assert_eq!(s("'it''s' \"a\\nb\" ''"), ["its", "a\\nb", ""]);
-        assert_eq!(s("x\\\ny"), ["xy"]);
-        for bad in ["", "   ", "'open", "\"open", "trailing\\"] {
-            assert!(split_command(bad).is_err(), "{bad:?}");
-        }
-    }
 
     #[test]
     fn requests_carry_schema_id_program_and_config() {
