@@ -29,8 +29,27 @@ use std::time::Duration;
 mod split;
 pub use split::split_command;
 
-/// The protocol's schema version, sent in every request.
+/// The protocol's first schema version: the thread cycles' events (rapids, feeds, thread moves,
+/// ROUGH/FINISH/SPRING passes).
 pub const SCHEMA: &str = "cyclecheck-candidate/1";
+/// The second: version 1 and arcs (`arc_cw`, `arc_ccw` with `cx`, `cz`), SEMI passes and the
+/// contour alarms (`BLOCK_NOT_FOUND`, `CONTOUR_TOO_LONG`) — what G02/G03 and G70–G72 produce.
+pub const SCHEMA_2: &str = "cyclecheck-candidate/2";
+
+/// The schema a program's request carries: version 2 when a block of it writes G02, G03, G70,
+/// G71 or G72 (read with the reference's lexer, up to its first lexing alarm), else version 1 —
+/// so a candidate that speaks only version 1 still runs every thread family, and refuses
+/// (never silently misreads) the programs whose traces need version 2.
+pub fn schema_for(program: &[u8]) -> &'static str {
+    let v2 = cycle_spec::lex::blocks(program).map_while(Result::ok).any(|b| {
+        b.g_codes().any(|g| !g.point && !g.negative && matches!(g.to_string().as_str(), "2" | "3" | "70" | "71" | "72"))
+    });
+    if v2 {
+        SCHEMA_2
+    } else {
+        SCHEMA
+    }
+}
 
 /// How much of the child's stderr is kept for reports (the last bytes).
 const STDERR_TAIL: usize = 4096;
@@ -66,7 +85,7 @@ impl Default for Limits {
 /// named: those the configuration leaves unset with the reference's defaults.
 pub fn request(id: u64, program: &[u8], config: &Config) -> String {
     let config = Config { params: cycle_spec::config::params(config).as_set(), ..*config };
-    let mut req = serde_json::json!({ "schema": SCHEMA, "id": id, "config": config });
+    let mut req = serde_json::json!({ "schema": schema_for(program), "id": id, "config": config });
     match std::str::from_utf8(program) {
         Ok(text) => req["program"] = text.into(),
         Err(_) => req["program_hex"] = program.iter().map(|b| format!("{b:02x}")).collect::<String>().into(),
@@ -370,6 +389,23 @@ mod tests {
         let r: serde_json::Value = serde_json::from_str(&request(1, b"G0\xff", &Config::default())).unwrap();
         assert_eq!(r["program_hex"], "4730ff");
         assert!(r.get("program").is_none());
+    }
+
+    /// Version 2 exactly for the programs that write an arc or a contour cycle.
+    #[test]
+    fn the_schema_follows_the_program() {
+        for (program, schema) in [
+            (&b"G0 X1\nG92 X1 Z-1 F1\nG90 X1 Z-2 I-1 F1\n"[..], SCHEMA),
+            (b"G0 X1 Z1\nG02 X2 Z0 R1 F1\n", SCHEMA_2),
+            (b"g3 x2 z0 i1 f1\n", SCHEMA_2),
+            (b"G71 U1 R1\n", SCHEMA_2),
+            (b"G70 P1 Q2\n", SCHEMA_2),
+            (b"G72 W1\n", SCHEMA_2),
+            (b"G2.0 X1\n", SCHEMA),
+            (b"G32 X1 Z-1 F1\n#\nG02 X1 R1\n", SCHEMA),
+        ] {
+            assert_eq!(schema_for(program), schema, "{}", String::from_utf8_lossy(program));
+        }
     }
 
     #[test]
