@@ -124,6 +124,7 @@ pub fn document(run: &Run, rows: &[Row]) -> Value {
     json!({
         "schema": SCHEMA,
         "identity": run.identity,
+        "proofs": run.proofs.json(),
         "tool": { "name": "cyclecheck", "version": env!("CARGO_PKG_VERSION"), "build": super::identity::LONG_VERSION, "candidate_protocol": crate::candidate::SCHEMA },
         "documents": {
             "docs/RULES.md": fingerprint(RULES_MD),

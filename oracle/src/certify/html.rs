@@ -294,6 +294,37 @@ fn divergences(run: &Run, out: &mut String) {
 }
 
 /// The page, with a plot per corpus program.
+/// The proof properties and how each was checked in this bundle: Kani (an imported log, or not
+/// run here), the z3 lemmas on its rules (run now), the drivers (`cargo test`).
+fn proofs(run: &Run, out: &mut String) {
+    let p = &run.proofs;
+    let z3 = match &p.z3_version {
+        Some(v) => format!("z3 ran here ({}): {} of {} lemmas unsat", escape(v), p.lemmas.iter().filter(|l| l.proved()).count(), p.lemmas.len()),
+        None => "z3 is not on this machine's PATH: the lemmas were not run".to_string(),
+    };
+    let kani = match &p.kani {
+        Some(k) => format!("Kani log imported (Kani {}, CBMC {})", escape(k.kani_version.as_deref().unwrap_or("unknown")), escape(k.cbmc_version.as_deref().unwrap_or("unknown"))),
+        None => "no Kani log imported (`--kani-log`): Kani was not run here".to_string(),
+    };
+    let _ = writeln!(
+        out,
+        "<h2 id=\"proofs\">Proofs: how each property was checked</h2>\n<p>{z3}. {kani}. The drivers (bounded-exhaustive and random) run every harness body under <code>cargo test</code>, not in this run. Nothing below is a proof unless z3 answered <code>unsat</code> or Kani SUCCESSFUL.</p>\n<table><tr><th>property</th><th>rules</th><th>Kani</th><th>z3 lemmas</th></tr>"
+    );
+    for prop in super::kani::PROPERTIES {
+        let lemmas: Vec<String> = p.lemmas_for(prop.rules).iter().map(|l| format!("{} <b>{}</b>", escape(l.name), escape(&l.result))).collect();
+        let _ = writeln!(
+            out,
+            "<tr><td><code>{}</code>: {}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
+            escape(prop.harness),
+            escape(prop.statement),
+            escape(&prop.rules.join(", ")),
+            escape(&p.kani_status(prop.harness, prop.checked_by)),
+            if lemmas.is_empty() { "—".to_string() } else { lemmas.join("<br>") }
+        );
+    }
+    out.push_str("</table>\n");
+}
+
 pub fn page(run: &Run, rows: &[Row], plots: &[PlotEntry]) -> String {
     let mut out = String::new();
     out.push_str("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n");
@@ -320,6 +351,7 @@ pub fn page(run: &Run, rows: &[Row], plots: &[PlotEntry]) -> String {
             p.svg
         );
     }
+    proofs(run, &mut out);
     let (exercised, implemented) = coverage(rows);
     let _ = writeln!(
         out,

@@ -25,10 +25,12 @@ pub mod cases;
 pub mod evidence;
 pub mod html;
 pub mod identity;
+pub mod kani;
 pub mod markdown;
 pub mod matrix;
 pub mod minimize;
 pub mod plot;
+pub mod proofs;
 pub mod tally;
 
 pub use crate::judge::CaseResult;
@@ -75,6 +77,8 @@ pub struct Options {
     pub seed: u64,
     /// Stop after this many consecutive candidate failures (refusals aside); 0: never.
     pub max_failures: u32,
+    /// A vendor's `cargo kani` log (`--kani-log`), parsed: the proofs section lists its verdicts.
+    pub kani_log: Option<kani::KaniLog>,
 }
 
 impl Default for Options {
@@ -86,6 +90,7 @@ impl Default for Options {
             cases: DEFAULT_CASES,
             seed: DEFAULT_SEED,
             max_failures: DEFAULT_MAX_FAILURES,
+            kani_log: None,
         }
     }
 }
@@ -188,6 +193,8 @@ pub struct Run {
     pub groups: Vec<Group>,
     /// Set when `--max-failures` stopped the run.
     pub stopped: Option<Stopped>,
+    /// How each proof property was checked: the z3 lemmas run now, the imported Kani log.
+    pub proofs: proofs::Proofs,
     pub duration: Duration,
 }
 
@@ -366,6 +373,7 @@ pub fn run(options: &Options, cases_out: &mut dyn Write, progress: &mut dyn FnMu
         families: cases.runs,
         groups,
         stopped,
+        proofs: proofs::Proofs::check(options.kani_log.clone()),
         duration: started.elapsed(),
     })
 }

@@ -137,7 +137,7 @@ pub struct ConfigArgs {
 /// A candidate and its limits (docs/CANDIDATE.md).
 #[derive(Args, Debug)]
 pub struct CandidateArgs {
-    /// An external expander speaking cyclecheck-candidate/1, instead of the production expander; split like a shell command line (quotes, backslashes) and run without a shell.
+    /// An external expander speaking cyclecheck-candidate/1 (and /2 for arcs and G70–G72), instead of the production expander; split like a shell command line (quotes, backslashes) and run without a shell.
     #[arg(long, value_name = "CMD")]
     pub candidate: Option<String>,
     /// Time allowed per case.
@@ -223,6 +223,10 @@ pub struct CertifyArgs {
     /// Seed of the generated campaign.
     #[arg(long, value_name = "S", default_value_t = certify::DEFAULT_SEED)]
     pub seed: u64,
+    /// A `cargo kani -p cycle-proofs` log to list with the proof properties (verdict, time,
+    /// Kani and CBMC versions per harness); without it Kani is "not run here".
+    #[arg(long, value_name = "FILE")]
+    pub kani_log: Option<PathBuf>,
 }
 
 #[derive(Args, Debug)]

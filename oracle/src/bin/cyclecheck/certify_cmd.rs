@@ -10,6 +10,17 @@ use cycle_oracle::certify::{self, bundle::Staging};
 use std::io::BufWriter;
 
 pub fn run(a: &CertifyArgs) -> Result<u8, Bad> {
+    let kani_log = match &a.kani_log {
+        None => None,
+        Some(f) => {
+            let text = std::fs::read_to_string(f).map_err(|e| Bad(format!("--kani-log {}: {e}", f.display())))?;
+            let log = certify::kani::parse_log(&text);
+            if log.harnesses.is_empty() {
+                return bad(format!("--kani-log {}: no \"Checking harness\" line: not a cargo-kani log", f.display()));
+            }
+            Some(log)
+        }
+    };
     let options = certify::Options {
         candidate: a.candidate.candidate.clone(),
         limits: a.candidate.limits(),
@@ -17,6 +28,7 @@ pub fn run(a: &CertifyArgs) -> Result<u8, Bad> {
         cases: a.cases,
         seed: a.seed,
         max_failures: a.max_failures,
+        kani_log,
     };
     if let Some(cmd) = &options.candidate {
         split_command(cmd).map_err(|e| Bad(format!("--candidate {cmd:?}: {e}")))?;
