@@ -46,6 +46,22 @@ fn lexers_agree_on_the_number_edges() {
     }
 }
 
+/// Values with zeros after the grid's last decimal place read the same in both engines (the
+/// number reader scales by the digits beyond the grid; `parse_blocks` runs both engines, on the
+/// metric ISB grid and the inch ISC grid, and requires them to conform).
+#[test]
+fn engines_agree_on_trailing_zeros() {
+    for zeros in 0..=17 {
+        let z = "0".repeat(zeros);
+        for value in [format!("1.5{z}"), format!("-20.125{z}"), format!("0.0001{z}"), format!("7.{z}")] {
+            let p = format!("G0 X{value} Z{value}\nG1 W-{value} F0.2{z}\n");
+            if let Err(e) = parse_blocks(p.as_bytes()) {
+                panic!("{p:?}:\n{e}");
+            }
+        }
+    }
+}
+
 #[test]
 fn lexers_agree_on_blocks_comments_and_bytes() {
     let programs: &[&[u8]] = &[
