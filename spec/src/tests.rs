@@ -17,7 +17,7 @@ fn passes(t: &Trace) -> Vec<(u32, PassKind, i64, Rule)> {
         .iter()
         .filter_map(|e| match e {
             Event::Pass(p) => Some((p.index, p.kind, p.diameter_depth, p.rule)),
-            Event::Move(_) => None,
+            _ => None,
         })
         .collect()
 }

@@ -108,7 +108,7 @@ fn first_cycle_move(case: &Case) -> Option<Event> {
         match item {
             Ok(Event::Pass(_)) => in_cycle = true,
             Ok(e @ Event::Move(m)) if in_cycle || m.kind == MoveKind::Thread => return Some(e),
-            Ok(Event::Move(_)) => {}
+            Ok(Event::Move(_) | Event::Dwell(_) | Event::Spindle(_)) => {}
             Err(_) => return None,
         }
     }

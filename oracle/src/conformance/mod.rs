@@ -36,7 +36,7 @@
 //! lines (`cycle_vocab::text`), the reference's rule and a few events of context before it.
 
 use crate::catalogue;
-use cycle_vocab::{Alarm, AlarmCode, Event, Grid, Move, MoveKind, Pass, Rule};
+use cycle_vocab::{Alarm, AlarmCode, Dwell, Event, Grid, Move, MoveKind, Pass, Rule, Spindle};
 use std::fmt;
 
 mod lockstep;
@@ -132,6 +132,8 @@ pub(crate) fn variant(e: &Event) -> &'static str {
     match e {
         Event::Pass(_) => "pass",
         Event::Move(_) => "move",
+        Event::Dwell(_) => "dwell",
+        Event::Spindle(_) => "spindle",
     }
 }
 
@@ -146,6 +148,18 @@ pub(crate) fn pass_field(r: &Pass, c: &Pass) -> Option<(&'static str, String, St
     differ("index", index, c.index)
         .or_else(|| differ("kind", kind.name(), c.kind.name()))
         .or_else(|| differ("diameter_depth", diameter_depth, c.diameter_depth))
+}
+
+/// The first differing field of two dwells (the rule tag is not compared).
+pub(crate) fn dwell_field(r: &Dwell, c: &Dwell) -> Option<(&'static str, String, String)> {
+    let Dwell { ms, rule: _ } = *r;
+    differ("ms", ms, c.ms)
+}
+
+/// The first differing field of two spindle events (the rule tag is not compared).
+pub(crate) fn spindle_field(r: &Spindle, c: &Spindle) -> Option<(&'static str, String, String)> {
+    let Spindle { state, rule: _ } = *r;
+    differ("state", format!("{state:?}"), format!("{:?}", c.state))
 }
 
 fn move_kind(k: MoveKind) -> &'static str {

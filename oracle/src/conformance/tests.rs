@@ -53,6 +53,8 @@ fn rule_tags_are_not_compared() {
         match e {
             Event::Move(m) => m.rule = Rule::PrjTrace,
             Event::Pass(p) => p.rule = Rule::PrjTrace,
+            Event::Dwell(d) => d.rule = Rule::PrjTrace,
+            Event::Spindle(s) => s.rule = Rule::PrjTrace,
         }
     }
     assert_eq!(check(&g92(), &c), Ok(()));
@@ -282,4 +284,22 @@ fn json_form() {
     assert_eq!(j["field"], "x");
     assert_eq!(j["rule"], "G92.PULLOUT");
     assert_eq!(j["values"]["candidate"], "58702");
+}
+
+/// A dwell or spindle event that differs in its field, or stands where the other trace has
+/// another kind of event, diverges and names the field.
+#[test]
+fn dwell_and_spindle_events_are_compared() {
+    use cycle_vocab::{Dwell, Spindle, SpindleState};
+    let dwell = |ms| Event::Dwell(Dwell { ms, rule: Rule::G83Peck });
+    let spindle = |state| Event::Spindle(Spindle { state, rule: Rule::G84Path });
+    let r = with(vec![rapid(1, 2), dwell(500), spindle(SpindleState::Reverse)], None);
+    assert_eq!(check(&r, &r.clone()), Ok(()));
+    let d = check(&r, &with(vec![rapid(1, 2), dwell(501), spindle(SpindleState::Reverse)], None)).unwrap_err();
+    assert_eq!((d.kind, d.index, d.field), (DivergenceKind::FieldMismatch, 1, Some("ms")));
+    assert_eq!((d.reference.as_str(), d.candidate.as_str()), ("G04 P500", "G04 P501"));
+    let d = check(&r, &with(vec![rapid(1, 2), dwell(500), spindle(SpindleState::Forward)], None)).unwrap_err();
+    assert_eq!((d.kind, d.index, d.field), (DivergenceKind::FieldMismatch, 2, Some("state")));
+    let d = check(&r, &with(vec![rapid(1, 2), spindle(SpindleState::Reverse), dwell(500)], None)).unwrap_err();
+    assert_eq!((d.kind, d.index), (DivergenceKind::EventKindMismatch, 1));
 }

@@ -27,7 +27,7 @@ pub use input::CycleInput;
 
 use crate::campaign::{judge, Verdict};
 use crate::engine::{Engine, ImplEngine, SpecEngine};
-use crate::readback::{self, Motion};
+use crate::readback::{self, Printed};
 use cycle_vocab::{Alarm, Config, Dialect, Grid, Increment, Rule, Units};
 
 /// A fuzz target.
@@ -209,9 +209,9 @@ pub(crate) fn gcode_roundtrip_case(program: &[u8], config: &Config) -> Result<()
         if grid != trace.grid {
             return Err(format!("grid {grid:?} read back as {:?}\n{}", trace.grid, context()));
         }
-        let expected: Vec<Motion> = trace.moves().map(Motion::from).collect();
+        let expected: Vec<Printed> = trace.events.iter().filter_map(Printed::of).collect();
         if let Some(i) = (0..expected.len().max(motions.len())).find(|&i| expected.get(i) != motions.get(i)) {
-            return Err(format!("motion {i}: {:?} read back as {:?}\n{}", expected.get(i), motions.get(i), context()));
+            return Err(format!("event {i}: {:?} read back as {:?}\n{}", expected.get(i), motions.get(i), context()));
         }
     }
     Ok(())
