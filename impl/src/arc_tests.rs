@@ -320,6 +320,13 @@ fn arc_alarms() {
     assert_eq!(a("G02 X10 Z-10.002 R5 F1"), al(AlarmCode::Geometry, b'R', Rule::ArcR, 2));
     assert_eq!(a("G02 X10 Z-10 R5 F1"), None); // c = 2R: the half circle
     assert_eq!(a("G02 X30 Z-5 K-5 F1"), al(AlarmCode::Geometry, b'X', Rule::ArcTol, 2));
+    // ARC.TOL: an end on the ray from the centre through S, within the tolerance, would close
+    // the full circle (docs/INTERPRETATION.md, "Arcs": "even within the tolerance") — beyond S
+    // or short of it, both ways round; just off the ray it is an arc of almost 360°.
+    assert_eq!(a("G02 X9.998 Z0 I5 F1"), al(AlarmCode::Geometry, b'X', Rule::ArcTol, 2));
+    assert_eq!(a("G03 X10.002 Z0 I5 F1"), al(AlarmCode::Geometry, b'X', Rule::ArcTol, 2));
+    assert_eq!(a("G03 X10.002 Z0.001 I5 F1"), None);
+    assert_eq!(a("G02 X9.996 Z0.001 I5 K-2.5 F1"), al(AlarmCode::Geometry, b'X', Rule::ArcTol, 2));
     // Without axis words an arc block only sets the feed; the mode is modal.
     let t = expand("G0 X10 Z0\nG02 F2\nX10 Z-10 R5\nG03 W-10 R5\n", Config::default());
     assert_eq!(t.alarm, None);
