@@ -1,6 +1,7 @@
 //! The cycle families, in one table ([`FAMILIES`]). A family is a cycle as a run exercises it —
 //! G92, G76 under gsk, G78, G76 under fanuc, G162 under nc201, the thread moves G32/G33/G34, the
-//! single cutting cycles G90 and G94 —
+//! single cutting cycles G90 and G94, the stock-removal cycles G71 and G72 and the finishing
+//! cycle G70 —
 //! and its row drives every consumer: the `--cycles` option and its help text, certify's
 //! generated runs, which cycle a case runs ([`cycle_run`]: the per-cycle counts of `corpus`,
 //! `diff`, the gate and certify), the snapshot folders, the bench cases, the fuzz input's
@@ -115,13 +116,48 @@ pub const FAMILIES: &[Family] = &[
         rule_prefixes: &["G94"],
         bench: gen::single_cut::g94_bench,
     },
+    // The contour (CNT.*) is read and checked alike by G71, G72 and G70; the matrix lists a rule
+    // once, so its rules stand with g71, the first of the three. Arcs (ARC.*), G50 and the
+    // nose-radius codes (TNRC.*) are program words any program may carry whatever cycle it runs
+    // (an arc or a G50 is no cycle): they are common ([`COMMON_PREFIXES`]).
+    Family {
+        name: "g71",
+        display: "G71",
+        dialects: &[Gsk, Fanuc],
+        codes: &[71],
+        build: gen::contour::g71,
+        rule_prefixes: &["G71", "CNT"],
+        bench: gen::contour::g71_bench,
+    },
+    Family {
+        name: "g72",
+        display: "G72",
+        dialects: &[Gsk, Fanuc],
+        codes: &[72],
+        build: gen::contour::g72,
+        rule_prefixes: &["G72"],
+        bench: gen::contour::g72_bench,
+    },
+    // G70 as the first cycle: a G70 finishing a contour written before it, without a roughing
+    // cycle (a G70 after G71 or G72 runs in that cycle's family).
+    Family {
+        name: "g70",
+        display: "G70",
+        dialects: &[Gsk, Fanuc],
+        codes: &[70],
+        build: gen::contour::g70,
+        rule_prefixes: &["G70"],
+        bench: gen::contour::g70_bench,
+    },
 ];
 
 /// The sizes the bench runs each family's bench case at.
 pub const BENCH_SIZES: [usize; 3] = [1, 100, 9_900];
 
-/// The catalogue prefixes of the rules every family follows.
-pub const COMMON_PREFIXES: &[&str] = &["COM", "PRJ"];
+/// The catalogue prefixes of the rules every family follows: the common rules, the project's,
+/// and the program words of M003 any program may write whatever cycle it runs — arcs G02/G03
+/// (ARC.*), G50 (G50.*) and the nose-radius codes G40/G41/G42 (TNRC.*).
+pub const COMMON_PREFIXES: &[&str] = &["COM", "PRJ", "ARC", "G50", "TNRC"];
 
 /// Cases per cycle run on one line: `G92 7, G76 8, …, alarm before a cycle 2`.
 pub fn counts_line(counts: &BTreeMap<CycleRun, usize>) -> String {
