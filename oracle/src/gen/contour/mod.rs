@@ -16,7 +16,7 @@ mod program;
 pub mod shape;
 
 use super::writer::{tail, Writer};
-use super::{config, unit, Case, Dice, LEAD_UNIT};
+use super::{config, unit, Case, Dice, LEAD_UNIT, N};
 use cycle_vocab::text::fixed;
 use cycle_vocab::Config;
 use defect::Defect;
@@ -130,7 +130,6 @@ fn build_as(cycle: Cycle, dice: &mut Dice, legal: bool) -> Built {
         config = Config { dialect: config.dialect, grid: config.grid, ..Config::default() };
     }
     let grid = config.grid;
-    let u = unit(grid);
     let mut w = Writer::new(&mut dice.fork(2));
     let d = &mut dice.fork(36);
     let axis_of = match cycle {
@@ -138,13 +137,16 @@ fn build_as(cycle: Cycle, dice: &mut Dice, legal: bool) -> Built {
         Cycle::G71 => Axis::G71,
         Cycle::G70 => [Axis::G71, Axis::G72][d.below(2) as usize],
     };
+    // The unit of the geometry: 1 mm (0.1 in), or a few increments — small contours where
+    // rounding ties and layers on vertices are frequent.
+    let u = if d.chance(10) { d.range(2, 40) } else { unit(grid) };
     let (defect, variant) = defect::draw(&mut dice.fork(3), cycle);
     let (defect, variant) = if legal { (Defect::Clean, 0) } else { (defect, variant) };
 
     // Parameters: 5132, 5133 (G71.PARAM), the arc tolerance (ARC.TOL), sometimes a few passes.
     let pd = &mut dice.fork(8);
     if pd.chance(15) {
-        config.params.p5132_rough_depth = Some(pd.range(u / 10, 2 * u));
+        config.params.p5132_rough_depth = Some(pd.range((u / 10).max(1), 2 * u));
     }
     if pd.chance(15) {
         config.params.p5133_rough_retract = Some(pd.range(0, u));
@@ -263,6 +265,9 @@ fn frame(d: &mut Dice, axis: Axis, stock: i64, u: i64) -> Frame {
         Axis::G72 if c < 0 => (d.range(20 * u, 160 * u), d.range(-5 * u, 10 * u)),
         Axis::G72 => (d.range(2 * u, 40 * u), d.range(-5 * u, 10 * u)),
     };
+    // Now and then far from the origin, near the words' limit N: the whole contour moved.
+    let far = if d.chance(3) { N - 40_000 * u.max(1_000) } else { 0 };
+    let a = (a.0 + far * d.one_of(&[1, -1]), a.1 + far * d.one_of(&[1, -1]));
     Frame { axis, a, s, c }
 }
 

@@ -329,6 +329,14 @@ fn rounded_arc(d: &mut Dice, f: Frame, at: Half, depth: i64, u: i64) -> Vec<Piec
     let rho = (depth.max(4 * u) as f64) * (0.5 + d.below(100) as f64 / 100.0);
     let a0 = 8.0 + d.below(50) as f64;
     let a1 = a0 + 5.0 + d.below((82.0 - a0 - 5.0) as u64 + 1) as f64;
+    // Sometimes a flat arc: a radius up to 10⁵ times the piece (at most N/4 increments), its
+    // sweep about the piece's length — a centre far off, products near the engines' bounds.
+    let (rho, a1) = if d.chance(15) {
+        let big = (rho * (100 + d.below(100_000)) as f64).min(super::super::N as f64 / 2.0);
+        (big, a0 + (depth.max(4 * u) as f64 / big).to_degrees().clamp(1e-6, 20.0))
+    } else {
+        (rho, a1)
+    };
     let convex = d.chance(50);
     let polar = |deg: f64| {
         let r = (deg).to_radians();
