@@ -294,12 +294,14 @@ fn allowance(d: &mut Dice, most: i64) -> Option<i64> {
     })
 }
 
-/// The bench case of G71 (`g72`: G72) with `layers` layers over a contour of `elements`
-/// elements: the ns block, one piece along the cut (every layer's cut ends beyond it), then
-/// `elements − 2` tapers back to A's X; Δd = 0.01 mm, `max_passes` just enough.
+/// The bench case of G71 (`g72`: G72) with exactly `layers` layers over a contour of
+/// `elements` elements (at least 3): the ns block, one piece along the cut (every layer's cut
+/// ends beyond it), then `elements − 2` tapers back to A's X; Δd = 0.01 mm, allowances U0.02
+/// W0.01, `max_passes` just enough.
 pub fn layers_bench(g72: bool, layers: usize, elements: usize) -> Case {
-    let (step, code) = if g72 { (10i64, "72") } else { (20i64, "71") };
-    let depth = layers as i64 * step + 2;
+    // The layer spacing and the allowance along the infeed axis, in its counts.
+    let (step, allowance, code) = if g72 { (10i64, 10, "72") } else { (20i64, 20, "71") };
+    let depth = layers as i64 * step + allowance + 2;
     let tapers = elements.saturating_sub(2).max(1) as i64;
     let (p_word, q_word) = if g72 { ('Z', 'X') } else { ('X', 'Z') };
     let a = (200_000 + depth, 0);

@@ -127,3 +127,18 @@ fn legal_programs_reach_the_edges() {
         assert!(*n >= 20, "{name}: {n} of the legal programs ({hits:?})");
     }
 }
+
+/// The bench cases have exactly the layers and elements asked for, without an alarm.
+#[test]
+fn bench_cases_have_their_layers_and_elements() {
+    for g72 in [false, true] {
+        for (layers, elements) in [(1, 3), (10, 10), (1_000, 100), (37, 1_000)] {
+            let c = super::layers_bench(g72, layers, elements);
+            let t = SpecEngine.expand(&c.program, &c.config);
+            assert_eq!(t.alarm, None, "{}", c.text());
+            let rough = t.events.iter().filter(|e| matches!(e, Event::Pass(p) if p.kind == cycle_vocab::PassKind::Rough)).count();
+            let contour = c.text().lines().filter(|l| l.starts_with('N')).count();
+            assert_eq!((rough, contour), (layers, elements), "g72 {g72}");
+        }
+    }
+}
