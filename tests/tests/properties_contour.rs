@@ -204,7 +204,7 @@ fn check(b: &Built, t: &Trace) -> Checked {
     let ps = passes(t);
     let k_layers = ps.iter().filter(|(p, _)| p.kind == PassKind::Rough).count();
     let max_passes = b.case.config.params.max_passes.unwrap_or(10_000);
-    ensure(k_layers as i64 + 1 <= max_passes, || format!("{k_layers} layers and SEMI exceed max_passes {max_passes}"))?;
+    ensure((k_layers as i64) < max_passes, || format!("{k_layers} layers and SEMI exceed max_passes {max_passes}"))?;
     let feed = b.feed;
     let ns_rapid = b.elements[0].kind == Kind::Rapid;
     let (q0, pieces) = q_frame(b);

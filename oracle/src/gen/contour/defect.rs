@@ -187,11 +187,12 @@ impl Defect {
 
     /// An allowance beyond N (COM.RANGES).
     pub(super) fn second_block_word(self, v: u32, dec: u32) -> Option<(char, String)> {
-        (self == AllowValue).then(|| (if v % 2 == 0 { 'U' } else { 'W' }, fixed(N + 1, dec)))
+        (self == AllowValue).then(|| (if v.is_multiple_of(2) { 'U' } else { 'W' }, fixed(N + 1, dec)))
     }
 
-    /// The contour's defects, on `blocks` (the ns block first) drawn in `f`.
-    pub(super) fn apply(self, v: u32, d: &mut Dice, f: Frame, blocks: &mut Vec<Block>, tolerance: i64, u: i64, grid: Grid) {
+    /// The contour's defects, on `blocks` (the ns block first) drawn in `f`, `u` the geometry's
+    /// unit.
+    pub(super) fn apply(self, v: u32, d: &mut Dice, f: Frame, blocks: &mut Vec<Block>, (tolerance, u, grid): (i64, i64, Grid)) {
         let (hp, hq) = f.h();
         let len = blocks.len();
         let j = 1 + d.below((len - 1).max(1) as u64) as usize;

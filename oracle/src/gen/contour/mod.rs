@@ -222,12 +222,12 @@ fn build_as(cycle: Cycle, dice: &mut Dice, legal: bool) -> Built {
     if bd.chance(30) {
         // F in some contour blocks: ignored by roughing, G70's from that block on (CNT.FST).
         for (i, b) in blocks.iter_mut().enumerate() {
-            if (i * 7 + bd.below(5) as usize) % 3 == 0 {
+            if (i * 7 + bd.below(5) as usize).is_multiple_of(3) {
                 b.feed = Some(bd.range(LEAD_UNIT / 100, LEAD_UNIT / 2));
             }
         }
     }
-    defect.apply(variant, &mut dice.fork(12), frame, &mut blocks, cp.arc_tolerance, u, grid);
+    defect.apply(variant, &mut dice.fork(12), frame, &mut blocks, (cp.arc_tolerance, u, grid));
 
     let arc_by_r = blocks.iter().any(|b| b.arc == ArcWords::R && matches!(b.el.kind, Kind::Arc { .. }));
 
