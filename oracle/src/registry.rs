@@ -364,6 +364,10 @@ mod tests {
         assert_eq!(run(b"G76 P1", Gsk, None), "g76");
         assert_eq!(run(b"G0 X1\ng033 Z-1 F1\nG92 X1", Gsk, None), "g32");
         assert_eq!(run(b"G162 G91 X1", Nc201, None), "g162");
+        // A contour written before G70 (arcs, G50: no family) runs G70; G71 before G70 runs G71.
+        assert_eq!(run(b"G50 X10 Z0\nN1 G0 X5 F1\nN2 G2 X9 Z-2 R2\nG70 P1 Q2", Gsk, None), "g70");
+        assert_eq!(run(b"G71 P1 Q2 F1\nN1 G0 X5\nN2 G1 Z-2\nG70 P1 Q2", Fanuc, None), "g71");
+        assert_eq!(run(b"G72 W1", Nc201, Some(1)), "alarm_before_cycle");
         // G92.1 and G-92 select nothing; G78 selects nothing under fanuc.
         assert_eq!(run(b"G92.1\nG-92\nG0 X1", Gsk, None), "no_cycle");
         assert_eq!(run(b"G78 P1", Fanuc, Some(1)), "alarm_before_cycle");
@@ -387,6 +391,13 @@ mod tests {
         assert_eq!(rule_group(Rule::G33), RuleGroup::Family(find("g32").unwrap()));
         assert_eq!(rule_group(Rule::ComLead), RuleGroup::Common);
         assert_eq!(rule_group(Rule::G163), RuleGroup::Other);
+        // The contour's rules stand with g71; arcs, G50 and the nose-radius codes are common.
+        assert_eq!(rule_group(Rule::CntFind), RuleGroup::Family(find("g71").unwrap()));
+        assert_eq!(rule_group(Rule::G72Layer), RuleGroup::Family(find("g72").unwrap()));
+        assert_eq!(rule_group(Rule::G70Uw), RuleGroup::Family(find("g70").unwrap()));
+        for rule in [Rule::ArcTol, Rule::G50Coord, Rule::TnrcSwitch] {
+            assert_eq!(rule_group(rule), RuleGroup::Common, "{rule}");
+        }
     }
 
     #[test]

@@ -140,7 +140,9 @@ fn g78_example_mode_05_is_out_of_range() {
 
 /// G71.EXAMPLE: nine layers X37 … X5 (G71.LAYER), the semi-finish pass along the contour shifted
 /// by U0.5 W0.2 (G71.LASTPASS), the return to X41 Z0 (G71.RETURN); then G70 along the contour
-/// itself (G70.PATH) and back (G70.RETURN) — the moves the register lists for example 1.
+/// itself (G70.PATH) and back (G70.RETURN) — the moves the register lists for example 1. G71.UW:
+/// the first block's U2 is the depth (layers 4 mm apart on the diameter), the second block's U0.5
+/// the allowance (the SEMI pass starts at X0.5 Z0.2).
 #[test]
 fn g71_example_nine_layers_semi_finish_and_g70() {
     let trace = expand_both("g71", include_str!("../../corpus/g71_example.nc"), gsk());
@@ -152,6 +154,8 @@ fn g71_example_nine_layers_semi_finish_and_g70() {
     assert_eq!(passes, want);
     let layers: Vec<i64> = trace.moves().filter(|m| m.rule == Rule::G71Layer && m.z == 0).map(|m| m.x).collect();
     assert_eq!(layers, (0..9).map(|k| 37_000 - 4_000 * k).collect::<Vec<_>>());
+    let semi = trace.moves().find(|m| m.rule == Rule::G71Lastpass).map(|m| (m.x, m.z));
+    assert_eq!(semi, Some((500, 200)));
     let g70: Vec<(i64, i64)> = trace.moves().filter(|m| matches!(m.rule, Rule::G70Path | Rule::G70Return)).map(|m| (m.x, m.z)).collect();
     assert_eq!(
         g70,
