@@ -3,7 +3,8 @@
 //! words before the cycle (nc201, parameters, TNRC.*, G50), the cycle blocks (CNT.PQ, G71.DEPTH,
 //! COM.LEAD, COM.RANGES), finding the contour (CNT.FIND both ways, CNT.MAX at 1 000 and 1 001
 //! blocks, 1 000 blocks without N(nf)), the contour's blocks (CNT.WORDS, CNT.NOSUB, CNT.FIRST,
-//! TNRC.SWITCH, a lexing error met while the contour is read), the shape
+//! TNRC.SWITCH, a lexing error met while the contour is read, an ns block without axis words),
+//! the shape
 //! (G71/G72.TYPE2, FIRST, MONOTONE — a step back, an arc turning inside its sweep, no travel
 //! along the cut) and the arcs (ARC.R: R ≤ 0, R > N, chord > 2R; ARC.TOL: off the circle, on the
 //! start's ray, E = S; ARC.FORMAT: R with I/K, neither; ARC.IK: I0 K0). A geometric defect is
@@ -48,6 +49,7 @@ pub(super) enum Defect {
     NoSub,
     FirstNoG,
     FirstArc,
+    NsBare,
     Type2,
     First,
     Back,
@@ -69,7 +71,7 @@ use Defect::*;
 /// The defects of every family.
 const COMMON: &[Defect] = &[
     Nc201, BadParam, NoseRadius, TnrcNoArc, TnrcSwitch, TnrcTool, TnrcToolInContour, G50Word, G50Range, MissingP,
-    MissingQ, MissingFeed, PqValue, NsNotNext, NfMissing, TooLong, Lexing, Words, NoSub, FirstNoG, FirstArc, Type2, First,
+    MissingQ, MissingFeed, PqValue, NsNotNext, NfMissing, TooLong, Lexing, Words, NoSub, FirstNoG, FirstArc, NsBare, Type2, First,
     Back, ArcTurns, NoTravel, ArcRZero, ArcRHuge, ArcChord, ArcOff, ArcRIk, ArcNeither, ArcIkZero, ArcRay, ArcFull,
 ];
 /// G71 and G72 only: the first block's values, the allowance, the pass bound.
@@ -222,10 +224,24 @@ impl Defect {
                 let i = d.below(len as u64) as usize;
                 let linear = !matches!(blocks[i].el.kind, Kind::Arc { .. });
                 let word = match self {
-                    NoSub => ('M', d.one_of(&["98", "99", "098"]).to_string()),
+                    NoSub => ('M', d.one_of(&["98", "99", "098", "98.0"]).to_string()),
                     TnrcToolInContour => ('T', "0101".to_string()),
                     _ => {
-                        let mut words = vec![("G", "4"), ("P", "1"), ("J", "1"), ("L", "2"), ("M", "3"), ("G", "41"), ("G", "50"), ("O", "1"), ("Q", "1"), ("E", "1")];
+                        let mut words = vec![
+                            ("G", "4"),
+                            ("P", "1"),
+                            ("J", "1"),
+                            ("L", "2"),
+                            ("M", "3"),
+                            ("M", "-99"),
+                            ("G", "41"),
+                            ("G", "50"),
+                            ("G", "1.0"),
+                            ("G", "-1"),
+                            ("O", "1"),
+                            ("Q", "1"),
+                            ("E", "1"),
+                        ];
                         if linear {
                             words.extend([("R", "1"), ("I", "1")]);
                         }
@@ -250,6 +266,15 @@ impl Defect {
                     Kind::Arc { cw: false } => "3",
                 };
                 blocks[1].g = Some(code.to_string());
+                return;
+            }
+            // The ns block without axis words (its end is A): G71.FIRST; G70 moves to P₀ all the
+            // same.
+            NsBare => {
+                blocks[0].bare = true;
+                blocks[0].g = Some(d.one_of(&["00", "1"]).to_string());
+                blocks[0].el.end = f.a;
+                blocks.insert(1, line(f.half(a_prime)));
                 return;
             }
             Type2 | First => {

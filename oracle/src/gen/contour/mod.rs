@@ -81,11 +81,14 @@ struct Block {
     extra: Vec<(char, String)>,
     /// F written in the block (CNT.FST).
     feed: Option<i64>,
+    /// A block without axis words: it moves nothing (its motion code, if any, sets the
+    /// contour's mode; its F waits for the next move).
+    bare: bool,
 }
 
 impl Block {
     fn of(el: Element, arc: ArcWords) -> Block {
-        Block { el, arc, g: None, extra: Vec::new(), feed: None }
+        Block { el, arc, g: None, extra: Vec::new(), feed: None, bare: false }
     }
 }
 
@@ -226,6 +229,17 @@ fn build_as(cycle: Cycle, dice: &mut Dice, legal: bool) -> Built {
                 b.feed = Some(bd.range(LEAD_UNIT / 100, LEAD_UNIT / 2));
             }
         }
+    }
+    if bd.chance(12) {
+        // A block without axis words: the next element's motion code alone (it sets the mode),
+        // an F alone, or both.
+        let i = 1 + bd.below(blocks.len() as u64) as usize;
+        let kind = blocks.get(i).map_or(Kind::Feed, |b| b.el.kind);
+        let el = Element { kind, end: blocks[i - 1].el.end, centre: None, exact: true };
+        let how = bd.below(3);
+        let g = (how == 1).then(String::new);
+        let feed = (how != 0).then(|| bd.range(LEAD_UNIT / 100, LEAD_UNIT / 2));
+        blocks.insert(i, Block { g, feed, bare: true, ..Block::of(el, ArcWords::Ik) });
     }
     defect.apply(variant, &mut dice.fork(12), frame, &mut blocks, (cp.arc_tolerance, u, grid));
 

@@ -139,8 +139,13 @@ pub(super) fn write(cycle: Cycle, (defect, v): (Defect, u32), w: &mut Writer, d:
         second.retain(|(l, _)| *l != word.0);
         second.push(word);
     }
+    // The roughing feed: mostly the second block's F; sometimes the modal feed from before.
     if defect != Defect::MissingFeed {
-        second.push(('F', feed));
+        if !p.legal && d.chance(5) {
+            w.block(&[('F', feed)]);
+        } else {
+            second.push(('F', feed));
+        }
     }
     if !comp && d.chance(10) {
         second.push(('S', "500".into()));
@@ -244,14 +249,14 @@ fn contour(w: &mut Writer, d: &mut Dice, p: &Words, ns_feed: Option<i64>) {
             mode = Some(b.el.kind);
         }
         let (x, z) = b.el.end;
-        let write_x = x != at.0 || bd.chance(10) || b.el.end == at;
+        let write_x = !b.bare && (x != at.0 || bd.chance(10) || b.el.end == at);
         if write_x {
             words.push(axis(w, bd, 'X', 'U', x, at.0, dec));
         }
-        if z != at.1 || bd.chance(10) {
+        if !b.bare && (z != at.1 || bd.chance(10)) {
             words.push(axis(w, bd, 'Z', 'W', z, at.1, dec));
         }
-        if let (Kind::Arc { .. }, Some(c)) = (b.el.kind, b.el.centre) {
+        if let (Kind::Arc { .. }, Some(c), false) = (b.el.kind, b.el.centre, b.bare) {
             let (i_, k_) = ((c.0 - at.0) / 2, c.1 - at.1);
             let mut ik = Vec::new();
             if i_ != 0 || k_ == 0 || bd.chance(40) {
