@@ -155,9 +155,21 @@ pub enum Centre {
     Ik(i64, i64),
 }
 
+/// ARC.TOL: whether `e` lies on the ray from `c` through `s` (E = S included) — the arc would
+/// close the full circle. Only after [`within_tolerance`] passed: its screen bounds E − C, so
+/// every component below is < 2^35 in half units and the products < 2^71.
+fn on_start_ray(s: (i64, i64), e: (i64, i64), c: (i64, i64)) -> bool {
+    let (su, sv) = half(s);
+    let (eu, ev) = half(e);
+    let (cu, cv) = half(c);
+    same((sv - cv, su - cu), (ev - cv, eu - cu))
+}
+
 /// ARC.* step 5 of an arc block from `s` to `e`, in the register's order — E = S (GEOMETRY on X,
 /// ARC.TOL), the centre (ARC.IK: centre = start, GEOMETRY on I; ARC.R: chord > 2R, GEOMETRY on
-/// R), the tolerance (GEOMETRY on X, ARC.TOL) — then the centre and the rule it was found by.
+/// R), the tolerance (GEOMETRY on X, ARC.TOL: off the circle by more than `tol`, or on the ray
+/// from the centre through S even within it — "would close the full circle") — then the centre
+/// and the rule it was found by.
 pub fn centre(s: (i64, i64), e: (i64, i64), cw: bool, words: Centre, tol: i64, line: u32) -> Result<((i64, i64), Rule), Alarm> {
     let geometry = |word: u8, rule: Rule| Alarm::new(AlarmCode::Geometry, Some(word), rule, line);
     if e == s {
@@ -172,7 +184,7 @@ pub fn centre(s: (i64, i64), e: (i64, i64), cw: bool, words: Centre, tol: i64, l
         }
         Centre::R(r) => (centre_r(s, e, r, cw).ok_or(geometry(b'R', Rule::ArcR))?, Rule::ArcR),
     };
-    if !within_tolerance(s, e, c, tol) {
+    if !within_tolerance(s, e, c, tol) || on_start_ray(s, e, c) {
         return Err(geometry(b'X', Rule::ArcTol));
     }
     Ok((c, rule))

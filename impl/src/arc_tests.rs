@@ -291,11 +291,16 @@ fn arc_alarms() {
     assert_eq!(a("G41 G02 G01 X1"), al(AlarmCode::Conflict, b'G', Rule::PrjWord, 2));
     // Words allowed: X U Z W R I K F; P is not.
     assert_eq!(a("G02 X20 Z-5 R5 F1 P1"), al(AlarmCode::WordNotAllowed, b'P', Rule::PrjWord, 2));
-    // (3) values, alphabetically: R ≤ 0 and R > N name ARC.R; I, K COM.RANGES.
+    // (3) values, alphabetically: R ≤ 0 names ARC.R; I, K COM.RANGES.
     assert_eq!(a("G02 X20 Z-5 R0 F1"), al(AlarmCode::OutOfRange, b'R', Rule::ArcR, 2));
     assert_eq!(a("G02 X20 Z-5 R-5 F1"), al(AlarmCode::OutOfRange, b'R', Rule::ArcR, 2));
-    assert_eq!(a("G02 X20 Z-5 R1000000 F1"), al(AlarmCode::OutOfRange, b'R', Rule::ArcR, 2));
-    assert_eq!(a("G02 X20 Z-5 R999999999999999999 F1"), al(AlarmCode::OutOfRange, b'R', Rule::ArcR, 2));
+    // ARC.R owns R ≤ 0 only; R > N is out of the generic length range (COM.RANGES), however
+    // large (docs/INTERPRETATION.md, "Arcs": "R ≤ 0 is `OUT OF RANGE` on R, rule ARC.R, R > N
+    // rule COM.RANGES").
+    assert_eq!(a("G02 X20 Z-5 R1000000 F1"), al(AlarmCode::OutOfRange, b'R', Rule::ComRanges, 2));
+    assert_eq!(a("G02 X20 Z-5 R999999999999999999 F1"), al(AlarmCode::OutOfRange, b'R', Rule::ComRanges, 2));
+    assert_eq!(a("G02 X20 Z-5 R-999999999999999999 F1"), al(AlarmCode::OutOfRange, b'R', Rule::ArcR, 2));
+    assert_eq!(a("G02 X20 Z-5 R-0 F1"), al(AlarmCode::OutOfRange, b'R', Rule::ArcR, 2));
     assert_eq!(a("G02 X20 Z-5 R5.0001 F1"), al(AlarmCode::Precision, b'R', Rule::ComUnits, 2));
     assert_eq!(a("G02 X20 Z-5 I1000000 F1"), al(AlarmCode::OutOfRange, b'I', Rule::ComRanges, 2));
     assert_eq!(a("G02 X20 Z-5 K-1000000 F1"), al(AlarmCode::OutOfRange, b'K', Rule::ComRanges, 2));
@@ -315,6 +320,13 @@ fn arc_alarms() {
     assert_eq!(a("G02 X10 Z-10.002 R5 F1"), al(AlarmCode::Geometry, b'R', Rule::ArcR, 2));
     assert_eq!(a("G02 X10 Z-10 R5 F1"), None); // c = 2R: the half circle
     assert_eq!(a("G02 X30 Z-5 K-5 F1"), al(AlarmCode::Geometry, b'X', Rule::ArcTol, 2));
+    // ARC.TOL: an end on the ray from the centre through S, within the tolerance, would close
+    // the full circle (docs/INTERPRETATION.md, "Arcs": "even within the tolerance") — beyond S
+    // or short of it, both ways round; just off the ray it is an arc of almost 360°.
+    assert_eq!(a("G02 X9.998 Z0 I5 F1"), al(AlarmCode::Geometry, b'X', Rule::ArcTol, 2));
+    assert_eq!(a("G03 X10.002 Z0 I5 F1"), al(AlarmCode::Geometry, b'X', Rule::ArcTol, 2));
+    assert_eq!(a("G03 X10.002 Z0.001 I5 F1"), None);
+    assert_eq!(a("G02 X9.996 Z0.001 I5 K-2.5 F1"), al(AlarmCode::Geometry, b'X', Rule::ArcTol, 2));
     // Without axis words an arc block only sets the feed; the mode is modal.
     let t = expand("G0 X10 Z0\nG02 F2\nX10 Z-10 R5\nG03 W-10 R5\n", Config::default());
     assert_eq!(t.alarm, None);

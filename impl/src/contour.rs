@@ -174,7 +174,8 @@ pub fn find_before(src: &[u8], before: u64, ns: u64, nf: u64, line: u32) -> Resu
 }
 
 /// CNT.FIRST: the ns block must write G00 or G01 — none is `MISSING WORD G`, G02/G03 `WORD NOT
-/// ALLOWED` on G (on the cycle block's line, as every cycle check but the contour blocks' own).
+/// ALLOWED` on G — on the ns block's `line` (docs/INTERPRETATION.md, G71 "Alarm lines":
+/// "CNT.FIRST, G71.TYPE2 and G71.FIRST on the ns block's").
 pub fn check_first(first_motion: Option<u64>, line: u32) -> Result<(), Alarm> {
     match first_motion {
         None => Err(Alarm::new(AlarmCode::MissingWord, Some(b'G'), Rule::CntFirst, line)),

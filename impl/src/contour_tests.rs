@@ -614,24 +614,25 @@ fn contour_block_checks() {
 }
 
 /// CNT.FIRST, G71.TYPE2, G71.FIRST, G71.MONOTONE (and G72's): the cycle checks after the
-/// contour's own, in the register's order; each on the cycle block's line, except the
-/// monotonicity of an element, on the element's line.
+/// contour's own, in the register's order. Lines (docs/INTERPRETATION.md, G71 "Alarm lines"):
+/// CNT.FIRST, TYPE2 and FIRST on the ns block's, c = 0 on the cycle block's, the monotonicity of
+/// an element on the element's.
 #[test]
 fn cycle_checks() {
     let a = |body: &str| alarm_of(&g71(60, body));
     // CNT.FIRST: the ns block writes no motion code, or an arc.
-    assert_eq!(a("N50 X20\nN60 Z-10\n"), al(AlarmCode::MissingWord, b'G', Rule::CntFirst, 3));
+    assert_eq!(a("N50 X20\nN60 Z-10\n"), al(AlarmCode::MissingWord, b'G', Rule::CntFirst, 4));
     assert_eq!(a("N50 G2 X20 Z0 R5\nN60 G1 Z-10\n"), al(AlarmCode::Geometry, b'R', Rule::ArcR, 4));
-    assert_eq!(a("N50 G2 X31 Z0 R5\nN60 G1 Z-10\n"), al(AlarmCode::WordNotAllowed, b'G', Rule::CntFirst, 3));
-    assert_eq!(a("N50 G3 X31 R5\nN60 G1 Z-10\n"), al(AlarmCode::WordNotAllowed, b'G', Rule::CntFirst, 3));
+    assert_eq!(a("N50 G2 X31 Z0 R5\nN60 G1 Z-10\n"), al(AlarmCode::WordNotAllowed, b'G', Rule::CntFirst, 4));
+    assert_eq!(a("N50 G3 X31 R5\nN60 G1 Z-10\n"), al(AlarmCode::WordNotAllowed, b'G', Rule::CntFirst, 4));
     // An ns block without motion code is checked as G00/G01: an arc word in it is PRJ.WORD.
     assert_eq!(a("N50 X20 R5\nN60 G1 Z-10\n"), al(AlarmCode::WordNotAllowed, b'R', Rule::PrjWord, 4));
     // G71.TYPE2 (the ns block moves Z) before G71.FIRST; by motion, not by words.
-    assert_eq!(a("N50 G1 X20 Z-1\nN60 Z-10\n"), al(AlarmCode::Unsupported, b'Z', Rule::G71Type2, 3));
-    assert_eq!(a("N50 G1 X41 W-1\nN60 Z-10\n"), al(AlarmCode::Unsupported, b'Z', Rule::G71Type2, 3));
+    assert_eq!(a("N50 G1 X20 Z-1\nN60 Z-10\n"), al(AlarmCode::Unsupported, b'Z', Rule::G71Type2, 4));
+    assert_eq!(a("N50 G1 X41 W-1\nN60 Z-10\n"), al(AlarmCode::Unsupported, b'Z', Rule::G71Type2, 4));
     assert_eq!(a("N50 G1 X20 Z0\nN60 Z-10\n"), None);
-    assert_eq!(a("N50 G1 X41\nN60 Z-10\n"), al(AlarmCode::Geometry, b'X', Rule::G71First, 3));
-    assert_eq!(a("N50 G1 Z0\nN60 Z-10\n"), al(AlarmCode::Geometry, b'X', Rule::G71First, 3));
+    assert_eq!(a("N50 G1 X41\nN60 Z-10\n"), al(AlarmCode::Geometry, b'X', Rule::G71First, 4));
+    assert_eq!(a("N50 G1 Z0\nN60 Z-10\n"), al(AlarmCode::Geometry, b'X', Rule::G71First, 4));
     // G71.MONOTONE: c = 0 (the contour ends at A′'s Z), then element by element, X before Z.
     assert_eq!(a("N50 G1 X20\nN60 X30\n"), al(AlarmCode::Geometry, b'Z', Rule::G71Monotone, 3));
     assert_eq!(a("N50 G1 X20\nN55 Z-10\nN60 Z0\n"), al(AlarmCode::Geometry, b'Z', Rule::G71Monotone, 3));
@@ -650,8 +651,8 @@ fn cycle_checks() {
     assert_eq!(a("N50 G1 X20\nZ-10\nG2 X10 Z-15 I-5\nN60 G1 Z-20\n"), al(AlarmCode::Geometry, b'X', Rule::G71Monotone, 6));
     // G72: TYPE2 on X, FIRST on Z, c = 0 on X; Z (the layer axis) before X.
     let b = |body: &str| alarm_of(&format!("G0 X41 Z1\nG72 W1 R1\nG72 P50 Q60 F0.2\n{body}"));
-    assert_eq!(b("N50 G0 X40 Z-20\nN60 G1 X10\n"), al(AlarmCode::Unsupported, b'X', Rule::G72Type2, 3));
-    assert_eq!(b("N50 G0 X41 Z1\nN60 G1 X10\n"), al(AlarmCode::Geometry, b'Z', Rule::G72First, 3));
+    assert_eq!(b("N50 G0 X40 Z-20\nN60 G1 X10\n"), al(AlarmCode::Unsupported, b'X', Rule::G72Type2, 4));
+    assert_eq!(b("N50 G0 X41 Z1\nN60 G1 X10\n"), al(AlarmCode::Geometry, b'Z', Rule::G72First, 4));
     assert_eq!(b("N50 G0 Z-20\nN60 G1 Z-10\n"), al(AlarmCode::Geometry, b'X', Rule::G72Monotone, 3));
     assert_eq!(b("N50 G0 Z-20\nX30 Z-21\nN60 G1 X10\n"), al(AlarmCode::Geometry, b'Z', Rule::G72Monotone, 5));
     assert_eq!(b("N50 G0 Z-20\nX50 Z-21\nN60 G1 X10\n"), al(AlarmCode::Geometry, b'Z', Rule::G72Monotone, 5));
@@ -779,14 +780,14 @@ fn g70_alarms() {
         long += "W-0.01\n";
     }
     assert_eq!(a(&long, "G70 P50 Q60"), al(AlarmCode::ContourTooLong, b'Q', Rule::CntMax, 1_003));
-    // The contour's checks (on its lines) and CNT.FIRST (on the G70 block's line). A contour
+    // The contour's checks (on its lines) and CNT.FIRST (on the ns block's line). A contour
     // met in program order runs as ordinary blocks first, so only what is legal there and
     // refused in a contour reaches the G70: an M code, an O word, a G04…
     assert_eq!(a("N50 G1 X20 F1\nZ-5 M8\nN60 Z-10\n", "G70 P50 Q60"), al(AlarmCode::WordNotAllowed, b'M', Rule::CntWords, 3));
     assert_eq!(a("N50 G1 X20 F1\nO5\nN60 Z-10\n", "G70 P50 Q60"), al(AlarmCode::WordNotAllowed, b'O', Rule::CntWords, 3));
     assert_eq!(a("N50 G1 X20 F1\nG96 S100\nN60 Z-10\n", "G70 P50 Q60"), al(AlarmCode::WordNotAllowed, b'G', Rule::CntWords, 3));
-    assert_eq!(a("N50 X20 F1\nN60 Z-10\n", "G70 P50 Q60"), al(AlarmCode::MissingWord, b'G', Rule::CntFirst, 4));
-    assert_eq!(a("N50 G3 X60 Z0 R5 F1\nN60 G1 Z-10\n", "G70 P50 Q60"), al(AlarmCode::WordNotAllowed, b'G', Rule::CntFirst, 4));
+    assert_eq!(a("N50 X20 F1\nN60 Z-10\n", "G70 P50 Q60"), al(AlarmCode::MissingWord, b'G', Rule::CntFirst, 2));
+    assert_eq!(a("N50 G3 X60 Z0 R5 F1\nN60 G1 Z-10\n", "G70 P50 Q60"), al(AlarmCode::WordNotAllowed, b'G', Rule::CntFirst, 2));
     // No monotonicity for G70.
     assert_eq!(a("N50 G1 X20 F1\nZ-10\nX10\nZ0\nN60 X50\n", "G70 P50 Q60"), None);
     // Missing feed, P, Q as for G71.

@@ -54,7 +54,8 @@ impl Machine {
         let at = contour::find_before(src, before, ns, nf, line)?;
         let mut reader = Blocks::resume(src, at);
         let first = self.read_contour(&mut reader, self.pos, ns, nf, false, line, prog.contour)?;
-        contour::check_first(first, line)?;
+        // CNT.FIRST on the ns block's line (element 0 is always the ns block).
+        contour::check_first(first, prog.contour.get(0).line)?;
         let shift = (v.u.unwrap_or(0), v.w.unwrap_or(0));
         *run = Run::Finish(finish::Cycle::new(self.pos, shift, feed, prog.contour));
         Ok(())
@@ -81,7 +82,7 @@ impl Machine {
         }
         let (feed, ns, nf) = self.cycle_words(v, line)?;
         let first = self.read_contour(prog.blocks, self.pos, ns, nf, true, line, prog.contour)?;
-        contour::check_first(first, line)?;
+        contour::check_first(first, prog.contour.get(0).line)?;
         let values = match axis {
             Axis::G71 => self.g71,
             Axis::G72 => self.g72,

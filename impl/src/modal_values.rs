@@ -10,7 +10,7 @@ use crate::rough::Axis;
 use crate::number::Number;
 use crate::thread_move::{ThreadCode, MAX_START_ANGLE};
 use crate::words::{
-    infeed_angle, integer_in, lead_f, lead_i, length_in, scaled_in, signed_length, signed_lead, At, MAX_G92_JK, MAX_LENGTH,
+    arc_radius, infeed_angle, integer_in, lead_f, lead_i, length_in, scaled_in, signed_length, signed_lead, At, MAX_G92_JK, MAX_LENGTH,
 };
 use cycle_vocab::{Alarm, AlarmCode, Dialect, Rule};
 
@@ -28,10 +28,11 @@ impl Machine {
         }
         match (kind, letter) {
             (_, b'F') => v.lead = Some(lead_f(n, grid, at)?),
-            // ARC.FORMAT: I (radius) and K signed lengths; ARC.R: R a length 1 … N.
+            // ARC.FORMAT: I (radius) and K signed lengths; ARC.R: R a length 1 … N (R ≤ 0
+            // under ARC.R, R > N under COM.RANGES).
             (Kind::Arc(_), b'I') => v.i = Some(signed_length(n, grid, at)?),
             (Kind::Arc(_), b'K') => v.k = Some(signed_length(n, grid, at)?),
-            (Kind::Arc(_), b'R') => v.r = Some(scaled_in(n, grid.decimals(), 1, MAX_LENGTH, Rule::ArcR, at)?),
+            (Kind::Arc(_), b'R') => v.r = Some(arc_radius(n, grid, at)?),
             // CNT.PQ: sequence numbers, integers 1 … 99 999.
             (Kind::G70 | Kind::RoughSecond(_), b'P') => v.p = Some(integer_in(n, 1, 99_999, Rule::CntPq, at)?),
             (Kind::G70 | Kind::RoughSecond(_), b'Q') => v.q = Some(integer_in(n, 1, 99_999, Rule::CntPq, at)?),

@@ -208,23 +208,25 @@ fn sign(v: i64) -> i64 {
 }
 
 impl Roughing {
-    /// The cycle's checks after the contour's (docs/INTERPRETATION.md, G71 "Cycle checks", (4)–(6),
-    /// every alarm but the contour elements' on the cycle block's `line`): G71.TYPE2 (the ns
-    /// block moves along the cut axis: `UNSUPPORTED`), G71.FIRST (it does not move along the layer
-    /// axis: `GEOMETRY`), G71.MONOTONE (c = 0; then each element after ns: the layer axis — its
-    /// ends, then a turn inside an arc — before the cut axis, on the element's line), then the pass
-    /// bound: K + 1 > `max_passes` is `TOO MANY PASSES` on U (G72: W), PRJ.MAXPASS.
+    /// The cycle's checks after the contour's (docs/INTERPRETATION.md, G71 "Cycle checks", (4)–(6)):
+    /// G71.TYPE2 (the ns block moves along the cut axis: `UNSUPPORTED`) and G71.FIRST (it does not
+    /// move along the layer axis: `GEOMETRY`), both on the ns block's line ("Alarm lines");
+    /// G71.MONOTONE (c = 0, on the cycle block's `line`; then each element after ns: the layer
+    /// axis — its ends, then a turn inside an arc — before the cut axis, on the element's line),
+    /// then the pass bound: K + 1 > `max_passes` is `TOO MANY PASSES` on U (G72: W), PRJ.MAXPASS,
+    /// on the cycle block's `line`.
     pub fn new(axis: Axis, start: (i64, i64), w: &Words, contour: &Contour, max_passes: u32, line: u32) -> Result<Roughing, Alarm> {
         let rules = axis.rules();
         let (la, lb) = axis.letters();
         let alarm = |code: AlarmCode, word: u8, rule: Rule, line: u32| Alarm::new(code, Some(word), rule, line);
         let n = contour.len().max(1);
         let a_prime = contour.get(0).end();
+        let ns_line = contour.get(0).line;
         if axis.b(a_prime) != axis.b(start) {
-            return Err(alarm(AlarmCode::Unsupported, lb, rules.type2, line));
+            return Err(alarm(AlarmCode::Unsupported, lb, rules.type2, ns_line));
         }
         if axis.a(a_prime) == axis.a(start) {
-            return Err(alarm(AlarmCode::Geometry, la, rules.first, line));
+            return Err(alarm(AlarmCode::Geometry, la, rules.first, ns_line));
         }
         let s = sign(axis.a(a_prime).saturating_sub(axis.a(start)));
         let c = sign(axis.b(contour.last().end()).saturating_sub(axis.b(a_prime)));

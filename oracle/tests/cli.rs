@@ -306,6 +306,9 @@ fn diff_exit_codes_follow_the_relation() {
         if p.config().grid.units == cycle_vocab::Units::Inch {
             args.extend(["--units", "inch"]);
         }
+        if p.config().grid.increment == cycle_vocab::Increment::Isc {
+            args.extend(["--increment", "isc"]);
+        }
         let o = run(&args);
         let reference = SpecEngine.expand(p.text.as_bytes(), &p.config());
         let candidate = ImplEngine.expand(p.text.as_bytes(), &p.config());

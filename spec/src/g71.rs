@@ -4,7 +4,8 @@
 //! or Q is the second block, else the first (G71.UW). The first block's values are kept for
 //! later G71 cycles — apart from G72's — and a word it omits falls back to its parameter
 //! (G71.PARAM). The second block reads its contour ahead and roughs it in layers along Z
-//! ([`crate::stock_removal`]). One-shot (CYC.ONESHOT): the motion mode stays.
+//! ([`crate::stock_removal`]). One-shot (CYC.ONESHOT): the motion mode stays. The seed's
+//! example 1 (G71.EXAMPLE, `corpus/g71_example.nc`) is expanded here.
 
 use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
 use crate::g70::{P, Q};

@@ -2,7 +2,8 @@
 //!
 //! `G72 W(Δd) R(e);` then `G72 P(ns) Q(nf) U(Δu) W(Δw) F S T;` (G72.FORMAT): "As G71 with X and
 //! Z exchanged" — layers at Z_k, cuts along X ([`crate::stock_removal`]). Its first block's
-//! values are kept apart from G71's, with the same parameters 5132, 5133 (G72.DEPTH).
+//! values are kept apart from G71's, with the same parameters 5132, 5133 (G72.DEPTH). The seed's
+//! example 2 (G72.EXAMPLE, `corpus/g72_example.nc`) is expanded here.
 
 use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
 use crate::g71::SECOND;

@@ -75,7 +75,8 @@ fn new_codes_under_nc201() {
     assert_eq!(expand(b"G40 G0 X1\n", &nc).alarm, None);
 }
 
-/// TNRC.*: the register's checks, in its order, each on its line; paths are unchanged.
+/// TNRC.*: the register's checks, in its order, each on its line; paths are unchanged
+/// (TNRC.CODES: G41, G42, G40 are modal no-motion codes that change no path at radius 0).
 #[test]
 fn nose_radius_codes() {
     let c = Config::default();
