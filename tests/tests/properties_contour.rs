@@ -60,6 +60,8 @@ fn passes(t: &Trace) -> Vec<(Pass, Vec<Move>)> {
                     last.1.push(*m);
                 }
             }
+            // G70–G72 neither dwell nor switch the spindle: such an event is not a move.
+            Event::Dwell(_) | Event::Spindle(_) => panic!("a contour cycle's trace has {e:?}"),
         }
     }
     out
