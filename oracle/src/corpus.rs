@@ -89,6 +89,11 @@ pub const PROGRAMS: &[Program] = &[
     program!("corpus", "g94_example", Gsk, Metric, [G94Example, G94Format, G94Modal, G94Path]),
     program!("corpus", "g71_example", Gsk, Metric, [G71Example, G71Format, G71Layer, G71Retract, G71Lastpass, G71Return, ArcR, G50Coord, G70Path, G70Return]),
     program!("corpus", "g72_example", Gsk, Metric, [G72Example, G72Format, G72Layer, G72Retract, G72Lastpass, G72Return, G70Path]),
+    program!("corpus", "g73_example", Gsk, Metric, [G73Example, G73Format, G73Uw, G73Escape, G73Count, G73Depth, G73Path, ArcR, G70Path]),
+    program!("corpus", "g74_example", Gsk, Metric, [G74Example, G74Format, G74E, G74Peck, G74Column]),
+    program!("corpus", "g75_example", Gsk, Metric, [G75Example, G75Format, G75Peck, G75Column]),
+    program!("corpus", "g83_example", Gsk, Metric, [G83Format, G83Peck]),
+    program!("corpus", "g84_example", Gsk, Metric, [G84Format, G84Path, G80]),
     // One program per feature (tests/programs/).
     program!("tests/programs", "g92_taper", Gsk, Metric, [G92Taper, G92Pullout, G92Modal, ComLongAxis]),
     program!("tests/programs", "g92_internal", Gsk, Metric, [ComSide, G92Jk1, G92Pullout, G92Modal]),
@@ -125,6 +130,15 @@ pub const PROGRAMS: &[Program] = &[
     program!("tests/programs", "g70_after_g71", Gsk, Metric, [G70Uw, G70Path, G70Return, CntFind, CntFlow]),
     program!("tests/programs", "g72_inch", Gsk, Inch, [ComUnits, G72Layer, G72Retract, ArcR]),
     program!("tests/programs", "g71_isc", Gsk, Metric / Isc, [ComUnits, G71Layer, ArcR, G71Allow]),
+    program!("tests/programs", "g73_d1", Gsk, Metric, [G73Count, G73Depth, G73Path, ArcR]),
+    program!("tests/programs", "g73_both_formats", Gsk, Metric, [G73Format, G73Uw, G73Escape, G73Count, G73Path, ArcIk]),
+    program!("tests/programs", "g74_one_peck", Gsk, Metric, [G74Peck, G74E]),
+    program!("tests/programs", "g74_last_increment", Gsk, Metric, [G74Peck, G74E]),
+    program!("tests/programs", "g74_columns", Gsk, Metric, [G74Column, G74Relief, G74Peck]),
+    program!("tests/programs", "g75_single_groove", Gsk, Metric, [G75Format, G75Peck]),
+    program!("tests/programs", "g75_relief", Gsk, Metric, [G75Column, G75Relief, G75Peck]),
+    program!("tests/programs", "g83_edges", Gsk, Metric, [G83Peck, G83Format]),
+    program!("tests/programs", "g84_g99", Gsk, Metric, [G84Path, G84Format, G80]),
 ];
 
 /// The program named `name` (file stem).

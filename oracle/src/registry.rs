@@ -1,7 +1,8 @@
 //! The cycle families, in one table ([`FAMILIES`]). A family is a cycle as a run exercises it —
 //! G92, G76 under gsk, G78, G76 under fanuc, G162 under nc201, the thread moves G32/G33/G34, the
 //! single cutting cycles G90 and G94, the stock-removal cycles G71 and G72 and the finishing
-//! cycle G70 —
+//! cycle G70, the pattern repeating cycle G73, the peck cycles G74 and G75, peck drilling G83
+//! and rigid tapping G84 —
 //! and its row drives every consumer: the `--cycles` option and its help text, certify's
 //! generated runs, which cycle a case runs ([`cycle_run`]: the per-cycle counts of `corpus`,
 //! `diff`, the gate and certify), the snapshot folders, the bench cases, the fuzz input's
@@ -148,6 +149,52 @@ pub const FAMILIES: &[Family] = &[
         build: gen::contour::g70,
         rule_prefixes: &["G70"],
         bench: gen::contour::g70_bench,
+    },
+    Family {
+        name: "g73",
+        display: "G73",
+        dialects: &[Gsk, Fanuc],
+        codes: &[73],
+        build: gen::contour::g73,
+        rule_prefixes: &["G73"],
+        bench: gen::contour::g73_bench,
+    },
+    Family {
+        name: "g74",
+        display: "G74",
+        dialects: &[Gsk, Fanuc],
+        codes: &[74],
+        build: gen::peck::g74,
+        rule_prefixes: &["G74"],
+        bench: gen::peck::g74_bench,
+    },
+    Family {
+        name: "g75",
+        display: "G75",
+        dialects: &[Gsk, Fanuc],
+        codes: &[75],
+        build: gen::peck::g75,
+        rule_prefixes: &["G75"],
+        bench: gen::peck::g75_bench,
+    },
+    Family {
+        name: "g83",
+        display: "G83",
+        dialects: &[Gsk, Fanuc],
+        codes: &[83],
+        build: gen::drill::g83,
+        rule_prefixes: &["G83"],
+        bench: gen::drill::g83_bench,
+    },
+    // G80 cancels what G84's M29 armed: its rule stands with g84.
+    Family {
+        name: "g84",
+        display: "G84",
+        dialects: &[Gsk, Fanuc],
+        codes: &[84],
+        build: gen::drill::g84,
+        rule_prefixes: &["G84", "G80"],
+        bench: gen::drill::g84_bench,
     },
 ];
 

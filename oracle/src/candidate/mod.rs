@@ -36,15 +36,29 @@ pub const SCHEMA: &str = "cyclecheck-candidate/1";
 /// contour alarms (`BLOCK_NOT_FOUND`, `CONTOUR_TOO_LONG`) — what G02/G03 and G70–G72 produce.
 pub const SCHEMA_2: &str = "cyclecheck-candidate/2";
 
-/// The schema a program's request carries: version 2 when a block of it writes G02, G03, G70,
-/// G71 or G72 (read with the reference's lexer, up to its first lexing alarm), else version 1 —
-/// so a candidate that speaks only version 1 still runs every thread family, and refuses
-/// (never silently misreads) the programs whose traces need version 2.
+/// The third: version 2 and the dwell and spindle events (`{"event": "dwell", ms, rule}`,
+/// `{"event": "spindle", state, rule}`) — what G73, G74, G75, G83 and G84 produce (G73 and the
+/// peck cycles need no new event, but a version-2 candidate may not know their codes: the
+/// version says which codes a request can hold).
+pub const SCHEMA_3: &str = "cyclecheck-candidate/3";
+
+/// The schema a program's request carries: version 3 when a block of it writes G73, G74, G75,
+/// G80, G83 or G84, else version 2 when one writes G02, G03, G70, G71 or G72 (read with the
+/// reference's lexer, up to its first lexing alarm), else version 1 — so a candidate that
+/// speaks an earlier version still runs every family of that version, and refuses (never
+/// silently misreads) the programs whose traces need a later one.
 pub fn schema_for(program: &[u8]) -> &'static str {
-    let v2 = cycle_spec::lex::blocks(program).map_while(Result::ok).any(|b| {
-        b.g_codes().any(|g| !g.point && !g.negative && matches!(g.to_string().as_str(), "2" | "3" | "70" | "71" | "72"))
-    });
-    if v2 {
+    let mut version = 1;
+    for b in cycle_spec::lex::blocks(program).map_while(Result::ok) {
+        for g in b.g_codes().filter(|g| !g.point && !g.negative) {
+            match g.to_string().as_str() {
+                "73" | "74" | "75" | "80" | "83" | "84" => return SCHEMA_3,
+                "2" | "3" | "70" | "71" | "72" => version = 2,
+                _ => {}
+            }
+        }
+    }
+    if version == 2 {
         SCHEMA_2
     } else {
         SCHEMA
@@ -391,7 +405,8 @@ mod tests {
         assert!(r.get("program").is_none());
     }
 
-    /// Version 2 exactly for the programs that write an arc or a contour cycle.
+    /// Version 3 for the programs that write G73–G75, G80, G83 or G84, else version 2 for an arc
+    /// or a contour cycle.
     #[test]
     fn the_schema_follows_the_program() {
         for (program, schema) in [
@@ -401,6 +416,12 @@ mod tests {
             (b"G71 U1 R1\n", SCHEMA_2),
             (b"G70 P1 Q2\n", SCHEMA_2),
             (b"G72 W1\n", SCHEMA_2),
+            (b"G0 X0 Z2\nG74 R1\n", SCHEMA_3),
+            (b"G02 X2 Z0 R1 F1\nG73 U1 W1 R2\n", SCHEMA_3),
+            (b"G98 M29 S60\nG84 Z-21 R2 F60\n", SCHEMA_3),
+            (b"G83 Z-30 R0.5 Q2000 F0.2\n", SCHEMA_3),
+            (b"G75 R1\n", SCHEMA_3),
+            (b"G80\n", SCHEMA_3),
             (b"G2.0 X1\n", SCHEMA),
             (b"G32 X1 Z-1 F1\n#\nG02 X1 R1\n", SCHEMA),
         ] {

@@ -13,7 +13,10 @@
 //! - [`single_cut`]: G90 / G94 single cutting cycles (M003), valid and invalid.
 //! - [`contour`]: G71 / G72 stock removal over random monotone contours of lines and arcs, then
 //!   G70, and G70 alone (M003), with the register's contour, arc, G50 and nose-radius alarms at
-//!   a controlled rate.
+//!   a controlled rate; G73 pattern repeating over the same contours, both formats.
+//! - [`peck`]: G74 / G75 peck cycles (M003), valid and invalid.
+//! - [`drill`]: G83 peck drilling and G84 rigid tapping (M003, read as FANUC lathe controls
+//!   do), valid and invalid.
 //! - [`garbage`]: random bytes, random word soup, and the corpus with a few bytes changed.
 //!
 //! Every structured case is built from a fixed-length vector of random *knobs* (`u32`s) by a
@@ -28,10 +31,12 @@
 //! millisecond.
 
 pub mod contour;
+pub mod drill;
 pub mod g162;
 pub mod g92;
 pub mod garbage;
 pub mod multipass;
+pub mod peck;
 pub mod single_cut;
 pub mod thread_moves;
 pub mod writer;

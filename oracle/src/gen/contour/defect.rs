@@ -76,6 +76,8 @@ const COMMON: &[Defect] = &[
 ];
 /// G71 and G72 only: the first block's values, the allowance, the pass bound.
 const ROUGHING: &[Defect] = &[DepthValue, AllowValue, ManyPasses];
+/// G73 only: the allowance's values, the pass bound.
+const PATTERN: &[Defect] = &[AllowValue, ManyPasses];
 /// G70 alone only: N(ns) twice before it, N(nf) after it.
 const FINISHING: &[Defect] = &[NsTwice, NfAfterG70];
 
@@ -85,7 +87,11 @@ pub(super) fn draw(d: &mut Dice, cycle: Cycle) -> (Defect, u32) {
     if !d.chance(30) {
         return (Clean, 0);
     }
-    let own = if cycle == Cycle::G70 { FINISHING } else { ROUGHING };
+    let own = match cycle {
+        Cycle::G70 => FINISHING,
+        Cycle::G73 => PATTERN,
+        Cycle::G71 | Cycle::G72 => ROUGHING,
+    };
     let all: Vec<Defect> = COMMON.iter().chain(own).copied().collect();
     (d.one_of(&all), d.below(1 << 16) as u32)
 }
@@ -164,7 +170,7 @@ impl Defect {
     /// (G70 alone): CNT.FIND's defects.
     pub(super) fn between(self, w: &mut Writer, n: &Numbers, cycle: Cycle) {
         match (self, cycle) {
-            (NsNotNext, Cycle::G71 | Cycle::G72) => w.line("M08"),
+            (NsNotNext, Cycle::G71 | Cycle::G72 | Cycle::G73) => w.line("M08"),
             (NsTwice, _) => w.line(&format!("N{} M08", n.ns)),
             _ => {}
         }

@@ -30,6 +30,8 @@ pub enum Cycle {
     G72,
     /// G70 alone: its contour stands before it.
     G70,
+    /// G73 pattern repeating, either format, then sometimes G70.
+    G73,
 }
 
 impl Cycle {
@@ -38,6 +40,7 @@ impl Cycle {
             Cycle::G71 => "g71",
             Cycle::G72 => "g72",
             Cycle::G70 => "g70",
+            Cycle::G73 => "g73",
         }
     }
 }
@@ -50,6 +53,11 @@ pub fn g71(dice: &mut Dice) -> Case {
 /// A G72 program.
 pub fn g72(dice: &mut Dice) -> Case {
     build(Cycle::G72, dice).case
+}
+
+/// A G73 program (over the same contours: G73 takes any contour, G73.USE).
+pub fn g73(dice: &mut Dice) -> Case {
+    build(Cycle::G73, dice).case
 }
 
 /// A program whose first cycle is a G70 finishing the contour written before it.
@@ -138,7 +146,7 @@ fn build_as(cycle: Cycle, dice: &mut Dice, legal: bool) -> Built {
     let axis_of = match cycle {
         Cycle::G72 => Axis::G72,
         Cycle::G71 => Axis::G71,
-        Cycle::G70 => [Axis::G71, Axis::G72][d.below(2) as usize],
+        Cycle::G70 | Cycle::G73 => [Axis::G71, Axis::G72][d.below(2) as usize],
     };
     // The unit of the geometry: 1 mm (0.1 in), or a few increments — small contours where
     // rounding ties and layers on vertices are frequent.
@@ -156,6 +164,12 @@ fn build_as(cycle: Cycle, dice: &mut Dice, legal: bool) -> Built {
     }
     if pd.chance(10) && !legal {
         config.params.arc_tolerance = Some(if pd.chance(30) { 0 } else { pd.range(1, 50) });
+    }
+    if cycle == Cycle::G73 && pd.chance(15) {
+        // G73's values when no first block gives them (G73.ESCAPE, G73.COUNT).
+        config.params.p5135_escape_x = Some(pd.range(0, 5 * u));
+        config.params.p5136_escape_z = Some(pd.range(0, 2 * u));
+        config.params.p5137_count = Some(pd.range(1, 6));
     }
     let cp = cycle_spec::config::params(&config);
 
@@ -355,6 +369,18 @@ pub fn g70_bench(n: usize) -> Case {
     }
     p.push_str(&format!("G00 X100 Z2\nG70 P1 Q{n}\n"));
     Case { family: "g70", program: p.into_bytes(), config: Config::default() }
+}
+
+/// The g73 bench case: `n` passes (d = n, Δi 0.001·n, Δk 0) over a contour of ten elements.
+pub fn g73_bench(n: usize) -> Case {
+    let n = n.max(1);
+    let mut p = format!("G00 X60 Z2\nG73 U{} W0 R{n}\nG73 P1 Q10 U0.2 W0.1 F0.2\nN1 G00 X20\n", fixed(n as i64, 3));
+    for i in 2..=10 {
+        p.push_str(&format!("N{i} G01 X{} Z-{}\n", fixed(20_000 + 2_000 * (i - 1), 3), fixed(3_000 * (i - 1), 3)));
+    }
+    let mut config = Config::default();
+    config.params.max_passes = Some(n as i64 + 1);
+    Case { family: "g73", program: p.into_bytes(), config }
 }
 
 #[cfg(test)]

@@ -107,30 +107,11 @@ pub(super) fn write(cycle: Cycle, (defect, v): (Defect, u32), w: &mut Writer, d:
         after(w, d, p, &pq, g90);
         return None;
     }
-    let (code, depth_letter, other) = match p.frame.axis {
-        Axis::G71 => ("71", 'U', ("72", 'W')),
-        Axis::G72 => ("72", 'W', ("71", 'U')),
+    let mut second = if cycle == Cycle::G73 {
+        g73_blocks(w, d, dec, u)
+    } else {
+        first_blocks(w, d, p, (defect, v), dec, u)
     };
-    // First blocks: the other cycle's (kept apart), an earlier one of this cycle (replaced).
-    if d.chance(8) {
-        let (dd, e) = (w.length(d.range(1, 3 * u), dec), w.length(d.range(0, u), dec));
-        w.block(&[('G', other.0.into()), (other.1, dd), ('R', e)]);
-    }
-    if let Some((dd, e)) = p.depth {
-        if d.chance(8) {
-            let (d2, e2) = (w.length(d.range(1, 3 * u), dec), w.length(d.range(0, u), dec));
-            w.block(&[('G', code.into()), (depth_letter, d2), ('R', e2)]);
-        }
-        let mut first = vec![('G', code.to_string())];
-        first.extend(dd.map(|v| (depth_letter, w.length(v, dec))));
-        first.extend(e.map(|v| ('R', w.length(v, dec))));
-        if let Some(word) = defect.first_block_word(v, depth_letter) {
-            first.retain(|(l, _)| *l != word.0);
-            first.push(word);
-        }
-        w.block(&first);
-    }
-    let mut second = vec![('G', code.to_string())];
     second.extend(pq.0.clone().map(|t| ('P', t)));
     second.extend(pq.1.clone().map(|t| ('Q', t)));
     second.extend(p.allowance.0.map(|v| ('U', w.length(v, dec))));
@@ -167,6 +148,78 @@ pub(super) fn write(cycle: Cycle, (defect, v): (Defect, u32), w: &mut Writer, d:
     });
     after(w, d, p, &pq, g90);
     finish
+}
+
+/// G71's or G72's first blocks (the other cycle's, an earlier one of this cycle, this one);
+/// returns the second block's G word.
+fn first_blocks(w: &mut Writer, d: &mut Dice, p: &Words, (defect, v): (Defect, u32), dec: u32, u: i64) -> Vec<(char, String)> {
+    let (code, depth_letter, other) = match p.frame.axis {
+        Axis::G71 => ("71", 'U', ("72", 'W')),
+        Axis::G72 => ("72", 'W', ("71", 'U')),
+    };
+    // First blocks: the other cycle's (kept apart), an earlier one of this cycle (replaced).
+    if d.chance(8) {
+        let (dd, e) = (w.length(d.range(1, 3 * u), dec), w.length(d.range(0, u), dec));
+        w.block(&[('G', other.0.into()), (other.1, dd), ('R', e)]);
+    }
+    if let Some((dd, e)) = p.depth {
+        if d.chance(8) {
+            let (d2, e2) = (w.length(d.range(1, 3 * u), dec), w.length(d.range(0, u), dec));
+            w.block(&[('G', code.into()), (depth_letter, d2), ('R', e2)]);
+        }
+        let mut first = vec![('G', code.to_string())];
+        first.extend(dd.map(|v| (depth_letter, w.length(v, dec))));
+        first.extend(e.map(|v| ('R', w.length(v, dec))));
+        if let Some(word) = defect.first_block_word(v, depth_letter) {
+            first.retain(|(l, _)| *l != word.0);
+            first.push(word);
+        }
+        w.block(&first);
+    }
+    vec![('G', code.to_string())]
+}
+
+/// G73's words: format (a)'s first block `G73 U(Δi) W(Δk) R(d)` (words omitted now and then:
+/// 5135–5137), or format (b)'s I K D in the second block (sometimes after a format (a) first
+/// block whose values they do not change); d mostly 1…12, sometimes 1, 0, with a point, large.
+/// Returns the second block's words so far.
+fn g73_blocks(w: &mut Writer, d: &mut Dice, dec: u32, u: i64) -> Vec<(char, String)> {
+    let escape = |d: &mut Dice| match d.weighted(&[70, 15, 15]) {
+        0 => d.range(0, 10 * u),
+        1 => 0,
+        _ => -d.range(1, 3 * u),
+    };
+    let count = |d: &mut Dice| match d.weighted(&[80, 8, 3, 3, 6]) {
+        0 => d.range(2, 12).to_string(),
+        1 => "1".to_string(),
+        2 => "0".to_string(),
+        3 => format!("{}.", d.range(1, 5)),
+        _ => d.range(13, 40).to_string(),
+    };
+    let format_b = d.chance(35);
+    if !format_b || d.chance(20) {
+        let mut first = vec![('G', "73".to_string())];
+        for (letter, v) in [('U', escape(d)), ('W', escape(d) / 2)] {
+            if !d.chance(10) {
+                first.push((letter, w.length(v, dec)));
+            }
+        }
+        if !d.chance(10) {
+            first.push(('R', count(d)));
+        }
+        if first.len() > 1 || d.chance(50) {
+            w.block(&first);
+        }
+    }
+    let mut second = vec![('G', "73".to_string())];
+    if format_b {
+        let (i, k, n) = (escape(d), escape(d) / 2, count(d));
+        second.extend([('I', w.length(i, dec)), ('K', w.length(k, dec)), ('D', n)]);
+        if d.chance(8) {
+            second.remove(1 + d.below(3) as usize);
+        }
+    }
+    second
 }
 
 /// What may follow the cycle (not in `legal` programs): a second G70, a block in the motion
