@@ -1,5 +1,5 @@
-(G73.FORMAT: both formats on the same part. Format a: G73 U W R, then G73 P Q U W F (four passes); format b:)
-(one block G73 P Q I K U W D F (three passes), its contour right after it as CNT.FIND asks, whose I, K, D do not)
+(G73.FORMAT: both formats on the same part. Format a: G73 U W R, then G73 P Q U W F, four passes; format b:)
+(one block G73 P Q I K U W D F, three passes, its contour right after it as CNT.FIND asks, whose I, K, D do not)
 (change the values format a keeps.)
 G00 X50 Z5
 G73 U8 W2 R4
