@@ -147,6 +147,7 @@ pub fn table() -> Vec<Box<dyn Family>> {
         Box::new(crate::g70::G70),
         Box::new(crate::g71::G71::default()),
         Box::new(crate::g72::G72::default()),
+        Box::new(crate::g73::G73::default()),
         Box::new(crate::g74::G74::default()),
         Box::new(crate::g75::G75::default()),
     ]
