@@ -150,6 +150,8 @@ pub fn table() -> Vec<Box<dyn Family>> {
         Box::new(crate::g73::G73::default()),
         Box::new(crate::g74::G74::default()),
         Box::new(crate::g75::G75::default()),
+        Box::new(crate::g83::G83),
+        Box::new(crate::g84::G84),
     ]
 }
 

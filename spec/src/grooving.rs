@@ -203,7 +203,7 @@ fn columns(cy: &Cycle) -> i128 {
 /// The stops from `from` toward `to` by `step` (> 0), `from` excluded: from + σ·k·step for
 /// k = 1, 2, … while short of `to`, then `to` itself ("the last exactly at E"). Empty when
 /// `from` = `to`.
-fn stops(from: i128, to: i128, step: i128) -> impl Iterator<Item = i128> {
+pub(crate) fn stops(from: i128, to: i128, step: i128) -> impl Iterator<Item = i128> {
     let sigma = (to - from).signum();
     let inner = (1..).map(move |k| from + sigma * k * step).take_while(move |&v| sigma * (to - v) > 0);
     inner.chain((from != to).then_some(to))
