@@ -118,6 +118,9 @@ fn seed_g84_line_g98() {
     ];
     assert_eq!(events(&t, 1), expect);
     assert!(t.events.iter().skip(1).take(7).all(|e| e.rule() == Rule::G84Path));
+    // The seed's line as one block: the G80 written with M29 ends only an earlier M29.
+    let one = run("G50 X60 Z40\nG00 X0 Z0\nG98M29S60G84Z-21R2F60G80\n");
+    assert_eq!(one.events, t.events[..8]);
     // Rounded once, half away from zero: F0.0003 / S2 = 1.5 lead counts → 2.
     let t = run("G98 M29 S2\nG84 Z-1 F0.0003\n");
     assert_eq!(t.moves().next().map(|m| (m.kind, m.feed)), Some((Thread, 2)));
@@ -185,4 +188,26 @@ fn g83_g84_alarms() {
     // G80 is a no-motion code accepted in any block (here with a move), not a motion code.
     let t = run("G80 G0 X5\nG80\n");
     assert_eq!(t.moves().count(), 1);
+}
+
+/// The feature files whose header comments lex (no nested parentheses) expand exactly as the
+/// blocks the tests above check by hand.
+#[test]
+fn lexable_feature_files_are_the_blocks_checked_above() {
+    let cases: &[(&str, &str)] = &[
+        (include_str!("../../corpus/g84_example.nc"), "G50 X60 Z40\nG00 X0 Z0\nG98M29S60\nG84Z-21R2F60\nG80\nG00 X60 Z40\n"),
+        (
+            include_str!("../../tests/programs/g83_edges.nc"),
+            "G00 X0 Z3\nG83 Z-10 R-1 P500 F0.1\nG83 Z-4 R-1 Q9000 F0.1\nG83 Z-5.001 Q1000 F0.1\nG00 X50 Z50\n",
+        ),
+        (include_str!("../../tests/programs/g74_one_peck.nc"), "G00 X0 Z2\nG74 R1\nG74 Z-3 Q10 F0.1\nG00 X50 Z50\n"),
+        (
+            include_str!("../../tests/programs/g73_d1.nc"),
+            "G00 X40 Z5\nG73 U6 W2 R1\nG73 P10 Q40 U0.4 W0.1 F0.2\nN10 G00 X10 Z1\nN20 G01 Z-10\nN30 G02 X20 Z-15 R5\nN40 G01 X30 Z-25\nG00 X60 Z50\n",
+        ),
+    ];
+    for (file, blocks) in cases {
+        let (a, b) = (run(file), run(blocks));
+        assert_eq!(a.events, b.events, "{blocks}");
+    }
 }
