@@ -5,7 +5,7 @@
 //! still computed (the position stays right), and the program stops after that block.
 
 use core::ops::ControlFlow;
-use cycle_vocab::{Alarm, AlarmCode, Event, Move, MoveKind, Pass, PassKind, Rule};
+use cycle_vocab::{Alarm, AlarmCode, Dwell, Event, Move, MoveKind, Pass, PassKind, Rule, Spindle, SpindleState};
 
 /// Where emitted events go.
 pub type Sink<'s> = &'s mut dyn FnMut(Event) -> ControlFlow<()>;
@@ -93,6 +93,18 @@ impl<'s> Out<'s> {
     /// A spindle-synchronized move (`G32`) with `lead` and start `angle` (0.001°).
     pub fn thread(&mut self, x: i128, z: i128, lead: i64, angle: u32, rule: Rule, line: u32) -> Result<(), Alarm> {
         self.go(MoveKind::Thread, x, z, lead, angle, rule, line)
+    }
+}
+
+impl Out<'_> {
+    /// PRJ.TRACE (M003, "Trace (OPEN)"): a dwell of `ms` milliseconds (`G04 P<ms>`).
+    pub fn dwell(&mut self, ms: u32, rule: Rule) {
+        self.emit(Event::Dwell(Dwell { ms, rule }));
+    }
+
+    /// PRJ.TRACE (M003): the spindle turns `state` from here on (`M03` / `M04`).
+    pub fn spindle(&mut self, state: SpindleState, rule: Rule) {
+        self.emit(Event::Spindle(Spindle { state, rule }));
     }
 }
 

@@ -62,6 +62,16 @@ pub struct Kind {
     pub axes: bool,
     /// Whether the block has a P or a Q word (G71.UW: the second block of G71, G72).
     pub pq: bool,
+    /// The letters the block writes, bit `letter − 'A'` (G73.FORMAT: I, K or D select format
+    /// (b)).
+    pub letters: u32,
+}
+
+impl Kind {
+    /// Whether the block writes a word with this (upper-case) letter.
+    pub fn has(&self, letter: u8) -> bool {
+        letter.is_ascii_uppercase() && self.letters & (1 << (letter - b'A')) != 0
+    }
 }
 
 /// What the handler of a block receives besides the machine state.
@@ -137,6 +147,11 @@ pub fn table() -> Vec<Box<dyn Family>> {
         Box::new(crate::g70::G70),
         Box::new(crate::g71::G71::default()),
         Box::new(crate::g72::G72::default()),
+        Box::new(crate::g73::G73::default()),
+        Box::new(crate::g74::G74::default()),
+        Box::new(crate::g75::G75::default()),
+        Box::new(crate::g83::G83),
+        Box::new(crate::g84::G84),
     ]
 }
 
@@ -169,6 +184,21 @@ pub struct State<'c> {
     pub incremental: bool,
     /// TNRC.CODES: the nose-radius compensation in force.
     pub side: crate::tnrc::Side,
+    /// G84.FORMAT: what rigid tapping needs from the blocks before it.
+    pub tapping: Tapping,
+}
+
+/// The state G84 reads (docs/INTERPRETATION.md, "G83 and G84"): "M29 must have been written in
+/// this block or since the last G80/G84 cycle"; "G98, G99 … the project keeps which one is in
+/// force (G99 at the start) only for G84's lead"; "S is the last S word".
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Tapping {
+    /// M29 armed rigid tapping (until G80 or a G84 cycle).
+    pub rigid: bool,
+    /// G98 (feed per minute) is in force; `false`: G99 (feed per revolution), the start.
+    pub per_minute: bool,
+    /// The last S word of an executed block, exactly as written (its value is checked by G84).
+    pub speed: Option<crate::lex::Number>,
 }
 
 impl State<'_> {

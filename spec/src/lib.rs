@@ -25,6 +25,9 @@
 //! | [`contour`] | CNT.* (M003): finding, checking and running the contour N(ns) … N(nf) |
 //! | [`g70`] | G70.* (M003): finishing |
 //! | [`g71`], [`g72`], [`stock_removal`] | G71.*, G72.* (M003): stock removal in layers |
+//! | [`g73`] | G73.* (M003): pattern repeating, both formats |
+//! | [`g74`], [`g75`], [`grooving`] | G74.*, G75.* (M003): peck drilling and grooving |
+//! | [`g83`], [`g84`] | G83.*, G84.*, G80 (M003): peck drilling and rigid tapping |
 //! | [`emit`] | PRJ.TRACE, PRJ.NOOP, COM.MULTISTART |
 #![forbid(unsafe_code)]
 
@@ -39,9 +42,15 @@ pub mod g50;
 pub mod g70;
 pub mod g71;
 pub mod g72;
+pub mod g73;
+pub mod g74;
+pub mod g75;
+pub mod g83;
+pub mod g84;
 pub mod g90;
 pub mod g94;
 pub mod g92;
+pub mod grooving;
 pub mod lex;
 pub mod multipass;
 pub mod program;
@@ -104,6 +113,12 @@ mod tests_contour;
 mod tests_g162;
 #[cfg(test)]
 mod tests_g71;
+#[cfg(test)]
+mod tests_g73;
+#[cfg(test)]
+mod tests_g74;
+#[cfg(test)]
+mod tests_g83;
 #[cfg(test)]
 mod tests_g90;
 #[cfg(test)]

@@ -61,7 +61,7 @@ impl<'c> Machine<'c> {
     /// PRJ.MODAL (PRJ): the machine starts at the configured start point, in G00, with no feed.
     pub fn new(config: &'c Config, sink: Sink<'c>) -> Machine<'c> {
         let out = Out::new(config.start_x, config.start_z, sink);
-        let st = State { config, out, feed: None, incremental: false, side: Side::Off };
+        let st = State { config, out, feed: None, incremental: false, side: Side::Off, tapping: Default::default() };
         Machine { st, motion: Motion::G00, families: family::table() }
     }
 
@@ -85,6 +85,7 @@ impl<'c> Machine<'c> {
         words_allowed(b, &words)?;
         let values = self.values(b, &words)?;
         self.absolute_or_incremental(b);
+        self.tapping_state(b);
         match code {
             Code::Family(index, g) => {
                 let new_run = self.motion != Motion::Family(index, g);
@@ -154,6 +155,10 @@ impl<'c> Machine<'c> {
                             return Err(alarm(AlarmCode::UnsupportedCode, b'G', Rule::PrjDialect, line));
                         }
                         41 | 42 | 96 | 98 => None,
+                        // G80 (M003): a no-motion code of `gsk` and `fanuc` ("every code of this
+                        // section is `UNSUPPORTED CODE`" under `nc201`).
+                        80 if nc201 => return Err(alarm(AlarmCode::UnsupportedCode, b'G', Rule::PrjDialect, line)),
+                        80 => None,
                         20 | 21 => {
                             // COM.UNITS: the grid of a trace is fixed for the whole program.
                             let wanted = if g == 20 { Units::Inch } else { Units::Metric };
@@ -232,6 +237,29 @@ impl<'c> Machine<'c> {
         }
     }
 
+    /// G84.FORMAT, G80, G50.SMAX (M003): what rigid tapping reads from the blocks before it —
+    /// G98 / G99 written set the feed mode ("the project keeps which one is in force (G99 at
+    /// the start) only for G84's lead"); G80 "ends an M29 not followed by G84"; M29 "arms rigid
+    /// tapping" (an M29 written with G80 arms: the G80 ends only an earlier one); "S is the last
+    /// S word". Contour blocks never come here (CNT.MODAL: they change no machine state).
+    fn tapping_state(&mut self, b: &Block) {
+        let t = &mut self.st.tapping;
+        for g in b.g_codes() {
+            match code_value(g) {
+                Some(98) => t.per_minute = true,
+                Some(99) => t.per_minute = false,
+                Some(80) => t.rigid = false,
+                _ => {}
+            }
+        }
+        if b.get(b'M').and_then(code_value) == Some(29) {
+            t.rigid = true;
+        }
+        if let Some(s) = b.get(b'S') {
+            t.speed = Some(s.clone());
+        }
+    }
+
     /// G00 / G01 (PRJ.MODAL, PRJ): one move to the end point, both axes together; G01 at the modal
     /// feed (COM.LEAD: `MISSING WORD F` when a G01 block moves with no feed set).
     fn linear(&mut self, b: &Block, feed: bool, v: &Values) -> Result<(), Alarm> {
@@ -267,7 +295,8 @@ fn words_allowed(b: &Block, words: &Words) -> Result<(), Alarm> {
 
 /// The kind of a family's block: its code, whether it has axis words, and whether P or Q.
 fn kind_of(b: &Block, g: u32) -> Kind {
-    Kind { g, axes: has_axis(b), pq: b.has(b'P') || b.has(b'Q') }
+    let letters = b.letters().iter().filter(|l| l.is_ascii_uppercase()).fold(0u32, |m, &l| m | 1 << (l - b'A'));
+    Kind { g, axes: has_axis(b), pq: b.has(b'P') || b.has(b'Q'), letters }
 }
 
 /// Whether the block has an axis word X, U, Z or W.
