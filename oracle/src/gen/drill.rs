@@ -127,8 +127,24 @@ fn build(dice: &mut Dice, tap: bool) -> Case {
         }
         _ => {}
     }
-    if d.chance(5) {
-        words.push(d.one_of(&[('X', "1".to_string()), ('U', "1".to_string()), ('C', "1".to_string()), ('K', "1".to_string()), ('I', "1".to_string())]));
+    if d.chance(10) {
+        // A defect: a refused word, an axis twice, a broken number, finer than the grid, out of
+        // range, a negative Q, a code no dialect here has, a zero feed.
+        let defect = match d.below(9) {
+            0 => d.one_of(&[('X', "1".to_string()), ('U', "1".to_string()), ('C', "1".to_string()), ('K', "1".to_string()), ('I', "1".to_string())]),
+            1 => ('W', w.length(bottom - az, dec)),
+            2 => ('Z', "-".to_string()),
+            3 => ('Z', format!("{}1", fixed(bottom, dec))),
+            4 => ('R', w.length(super::N + 1, dec)),
+            5 => ('Q', "-5".to_string()),
+            6 => ('G', "91".to_string()),
+            7 => ('F', "0".to_string()),
+            _ => ('S', "1.5".to_string()),
+        };
+        if matches!(defect.0, 'Z' | 'R' | 'Q' | 'F') {
+            words.retain(|(l, _)| *l != defect.0);
+        }
+        words.push(defect);
     }
     if d.chance(3) {
         config.params.max_passes = Some(d.range(1, 3));

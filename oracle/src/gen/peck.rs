@@ -152,7 +152,12 @@ fn build(dice: &mut Dice, peck: Peck) -> Case {
     // word, out of range, X with U, a few passes allowed.
     if d.chance(8) {
         let (peck_axis, peck_word) = if pecks_along_x { ('X', 'P') } else { ('Z', 'Q') };
-        match d.below(8) {
+        let step_word = if pecks_along_x { 'Q' } else { 'P' };
+        match d.below(12) {
+            8 if steps => words.retain(|(l, _)| *l != step_word),
+            9 => words.push(('X', format!("{}1", fixed(ex, dec)))),
+            10 => words.push(('Z', "-".into())),
+            11 => words.push(('G', "91".into())),
             0 => words.retain(|(l, _)| *l != peck_axis && *l != if peck_axis == 'X' { 'U' } else { 'W' }),
             1 => words.retain(|(l, _)| *l != peck_word),
             2 => words.push((peck_word, "0".into())),
@@ -200,7 +205,7 @@ mod tests {
     /// The generators mostly build legal cycles and reach the peck cycles' alarms.
     #[test]
     fn peck_cycles_reach_the_rules() {
-        super::super::tests::assert_reaches(super::g74, &[Rule::G74Format, Rule::G74Peck, Rule::ComLead, Rule::PrjWord, Rule::PrjMaxPass]);
-        super::super::tests::assert_reaches(super::g75, &[Rule::G75Format, Rule::G75Peck, Rule::ComRanges, Rule::PrjDialect]);
+        super::super::tests::assert_reaches(super::g74, &[Rule::G74Format, Rule::G74Peck, Rule::G74Column, Rule::ComLead, Rule::PrjWord, Rule::PrjMaxPass]);
+        super::super::tests::assert_reaches(super::g75, &[Rule::G75Format, Rule::G75Peck, Rule::G75Column, Rule::ComRanges, Rule::PrjDialect]);
     }
 }
