@@ -49,6 +49,7 @@ pub mod contour;
 mod emit;
 mod finish;
 pub mod fixed;
+mod g74;
 pub mod g162;
 /// Public (hidden) only so that the proof harnesses (`cycle-proofs`) can drive one G90/G94 cycle
 /// below the lexer; not part of the API.
@@ -274,3 +275,6 @@ mod arc_tests;
 
 #[cfg(test)]
 mod contour_tests;
+
+#[cfg(test)]
+mod g74_tests;

@@ -41,6 +41,11 @@ impl Machine {
             (Kind::RoughFirst(Axis::G71), b'R') => v.r = Some(n_len(0, Rule::G71Retract)?),
             (Kind::RoughFirst(Axis::G72), b'W') => v.depth = Some(n_len(1, Rule::G72Depth)?),
             (Kind::RoughFirst(Axis::G72), b'R') => v.r = Some(n_len(0, Rule::G72Depth)?),
+            // G74.FORMAT, G75.FORMAT (G74.UNITS): e, Δd, P (Δi), Q (Δk) unsigned lengths 0 … N,
+            // mm without a decimal point in every dialect.
+            (Kind::PeckFirst(_) | Kind::PeckSecond(_), b'R') => v.r = Some(n_len(0, Rule::ComRanges)?),
+            (Kind::PeckSecond(_), b'P') => v.p = Some(n_len(0, Rule::ComRanges)?),
+            (Kind::PeckSecond(_), b'Q') => v.q = Some(n_len(0, Rule::ComRanges)?),
             // NC201.XMODE: X of G00/G01 by `x_radius`.
             (_, b'X') if self.config.dialect == Dialect::Nc201 => v.x = Some(self.x_word(n, at)?),
             // G90.FORMAT, G94.FORMAT: the taper, a signed length (I is no lead here).

@@ -1,0 +1,80 @@
+//! The canned cycles of M003 in the block interpreter (docs/INTERPRETATION.md, "G73, G74, G75,
+//! G83, G84"): the first blocks' kept values (G74.E, G73.FORMAT), step (4) of each cycle block
+//! and the hand-over to the cycle's own checks (step 5) and run. All are one-shot (CYC.ONESHOT):
+//! the motion mode and any G92/G90/G94 run stay as they were; F written in the block becomes the
+//! modal feed.
+
+use super::{Machine, Vals};
+use crate::config::Params;
+use crate::g74::{self, PeckCode};
+use crate::run::Run;
+use cycle_vocab::{Alarm, AlarmCode, Rule};
+
+/// G73.FORMAT: the values a G73 first block keeps — Δi (radius) and Δk, increments, and d.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PatternValues {
+    pub di: i64,
+    pub dk: i64,
+    pub d: i64,
+}
+
+impl PatternValues {
+    /// Parameters 5135, 5136, 5137 (the values before any first block).
+    pub fn defaults(p: &Params) -> PatternValues {
+        PatternValues { di: p.p5135_escape_x, dk: p.p5136_escape_z, d: i64::from(p.p5137_count) }
+    }
+}
+
+impl Machine {
+    /// (4) COM.LEAD: the feed of a cycle block (its F, else the modal feed), which becomes the
+    /// modal feed.
+    pub(super) fn cycle_feed(&mut self, v: &Vals, line: u32) -> Result<i64, Alarm> {
+        if let Some(f) = v.lead {
+            self.feed = Some(f);
+        }
+        self.feed.ok_or(Alarm::new(AlarmCode::MissingWord, Some(b'F'), Rule::ComLead, line))
+    }
+
+    /// G74.FORMAT, G74.E: a first block keeps e for its code (G74's and G75's apart); R omitted
+    /// falls back to parameter 5139.
+    pub(super) fn peck_first(&mut self, code: PeckCode, v: &Vals) {
+        let e = v.r.unwrap_or(self.params.p5139_peck_return);
+        match code {
+            PeckCode::G74 => self.g74_e = e,
+            PeckCode::G75 => self.g75_e = e,
+        }
+    }
+
+    /// G74.FORMAT / G75.FORMAT, second block: (4) the feed; (5) the cycle's checks; the run.
+    /// E from X(U), Z(W), an omitted axis at A's; P, Q, R default to 0.
+    pub(super) fn peck_second(&mut self, code: PeckCode, v: &Vals, line: u32, run: &mut Run) -> Result<(), Alarm> {
+        let feed = self.cycle_feed(v, line)?;
+        let e = match code {
+            PeckCode::G74 => self.g74_e,
+            PeckCode::G75 => self.g75_e,
+        };
+        let words = g74::Words {
+            end: Self::end_point(v, self.pos, self.pos),
+            di: v.p.unwrap_or(0),
+            dk: v.q.unwrap_or(0),
+            relief: v.r.unwrap_or(0),
+            e,
+            feed,
+        };
+        *run = Run::Peck(g74::cycle(code, self.pos, &words, self.params.max_passes, line)?);
+        Ok(())
+    }
+}
+
+impl Machine {
+    pub(super) fn pattern_first(&mut self, _v: &Vals) {}
+    pub(super) fn pattern_second(&mut self, _b: bool, _v: &Vals, line: u32, _run: &mut Run, _prog: &mut crate::Program<'_, '_>) -> Result<(), Alarm> {
+        Err(Alarm::new(AlarmCode::UnsupportedCode, Some(b'G'), Rule::PrjSupported, line))
+    }
+    pub(super) fn g83(&mut self, _v: &Vals, line: u32, _run: &mut Run) -> Result<(), Alarm> {
+        Err(Alarm::new(AlarmCode::UnsupportedCode, Some(b'G'), Rule::PrjSupported, line))
+    }
+    pub(super) fn g84(&mut self, _v: &Vals, line: u32, _run: &mut Run) -> Result<(), Alarm> {
+        Err(Alarm::new(AlarmCode::UnsupportedCode, Some(b'G'), Rule::PrjSupported, line))
+    }
+}
