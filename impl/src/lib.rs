@@ -49,6 +49,7 @@ pub mod contour;
 mod emit;
 mod finish;
 pub mod fixed;
+mod g73;
 mod g74;
 pub mod g162;
 /// Public (hidden) only so that the proof harnesses (`cycle-proofs`) can drive one G90/G94 cycle
@@ -278,3 +279,6 @@ mod contour_tests;
 
 #[cfg(test)]
 mod g74_tests;
+
+#[cfg(test)]
+mod g73_tests;

@@ -6,8 +6,11 @@
 
 use super::{Machine, Vals};
 use crate::config::Params;
+use crate::contour;
+use crate::g73;
 use crate::g74::{self, PeckCode};
 use crate::run::Run;
+use crate::Program;
 use cycle_vocab::{Alarm, AlarmCode, Rule};
 
 /// G73.FORMAT: the values a G73 first block keeps — Δi (radius) and Δk, increments, and d.
@@ -67,10 +70,47 @@ impl Machine {
 }
 
 impl Machine {
-    pub(super) fn pattern_first(&mut self, _v: &Vals) {}
-    pub(super) fn pattern_second(&mut self, _b: bool, _v: &Vals, line: u32, _run: &mut Run, _prog: &mut crate::Program<'_, '_>) -> Result<(), Alarm> {
-        Err(Alarm::new(AlarmCode::UnsupportedCode, Some(b'G'), Rule::PrjSupported, line))
+    /// G73.FORMAT (format (a)'s first block): replaces G73's kept Δi, Δk, d; an omitted word
+    /// falls back to its parameter (5135, 5136, 5137).
+    pub(super) fn pattern_first(&mut self, v: &Vals) {
+        let p = PatternValues::defaults(&self.params);
+        self.g73 = PatternValues { di: v.u.unwrap_or(p.di), dk: v.w.unwrap_or(p.dk), d: v.r.unwrap_or(p.d) };
     }
+
+    /// G73.FORMAT, G73.UW: format (a)'s second block (`b_format` false: the kept Δi, Δk, d) or
+    /// format (b) (its own I, K, D, which do not change the kept ones). (4) the feed, P, Q, then
+    /// in format (b) I, K, D; (5) the contour read ahead (CNT.FIND as G71, CNT.MAX), each of its
+    /// blocks' checks, CNT.FIRST, then the pass bound (`g73::Cycle::new`).
+    pub(super) fn pattern_second(&mut self, b_format: bool, v: &Vals, line: u32, run: &mut Run, prog: &mut Program<'_, '_>) -> Result<(), Alarm> {
+        if let Some(f) = v.lead {
+            self.feed = Some(f);
+        }
+        let (feed, ns, nf) = self.cycle_words(v, line)?;
+        let (values, count_word) = if b_format {
+            let missing = |word: u8| Alarm::new(AlarmCode::MissingWord, Some(word), Rule::G73Format, line);
+            let di = v.i.ok_or(missing(b'I'))?;
+            let dk = v.k.ok_or(missing(b'K'))?;
+            let d = v.d.ok_or(missing(b'D'))?;
+            (PatternValues { di, dk, d }, b'D')
+        } else {
+            (self.g73, b'R')
+        };
+        let first = self.read_contour(prog.blocks, self.pos, ns, nf, true, line, prog.contour)?;
+        contour::check_first(first, prog.contour.get(0).line)?;
+        let words = g73::Words {
+            di: values.di,
+            dk: values.dk,
+            d: values.d,
+            allowance: (v.u.unwrap_or(0), v.w.unwrap_or(0)),
+            feed,
+            count_word,
+        };
+        *run = Run::Pattern(g73::Cycle::new(self.pos, &words, prog.contour, self.params.max_passes, line)?);
+        Ok(())
+    }
+}
+
+impl Machine {
     pub(super) fn g83(&mut self, _v: &Vals, line: u32, _run: &mut Run) -> Result<(), Alarm> {
         Err(Alarm::new(AlarmCode::UnsupportedCode, Some(b'G'), Rule::PrjSupported, line))
     }

@@ -46,6 +46,14 @@ impl Machine {
             (Kind::PeckFirst(_) | Kind::PeckSecond(_), b'R') => v.r = Some(n_len(0, Rule::ComRanges)?),
             (Kind::PeckSecond(_), b'P') => v.p = Some(n_len(0, Rule::ComRanges)?),
             (Kind::PeckSecond(_), b'Q') => v.q = Some(n_len(0, Rule::ComRanges)?),
+            // G73.FORMAT, G73.COUNT: d (R of the first block, D of format (b)) an integer ≥ 1;
+            // format (b)'s I (Δi, radius) and K signed lengths; P, Q sequence numbers.
+            (Kind::PatternFirst, b'R') => v.r = Some(integer_in(n, 1, MAX_LENGTH, Rule::G73Count, at)?),
+            (Kind::PatternSecond(_), b'D') => v.d = Some(integer_in(n, 1, MAX_LENGTH, Rule::G73Count, at)?),
+            (Kind::PatternSecond(_), b'I') => v.i = Some(signed_length(n, grid, at)?),
+            (Kind::PatternSecond(_), b'K') => v.k = Some(signed_length(n, grid, at)?),
+            (Kind::PatternSecond(_), b'P') => v.p = Some(integer_in(n, 1, 99_999, Rule::CntPq, at)?),
+            (Kind::PatternSecond(_), b'Q') => v.q = Some(integer_in(n, 1, 99_999, Rule::CntPq, at)?),
             // NC201.XMODE: X of G00/G01 by `x_radius`.
             (_, b'X') if self.config.dialect == Dialect::Nc201 => v.x = Some(self.x_word(n, at)?),
             // G90.FORMAT, G94.FORMAT: the taper, a signed length (I is no lead here).

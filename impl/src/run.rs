@@ -6,6 +6,7 @@ use crate::contour::Contour;
 use crate::emit::{self, emit};
 use crate::finish;
 use crate::g162;
+use crate::g73;
 use crate::g74;
 use crate::g90;
 use crate::rough::Roughing;
@@ -32,6 +33,8 @@ pub enum Run {
     Finish(finish::Cycle),
     /// A G74 or G75 cycle (G74.PECK, G74.COLUMN, G75.*).
     Peck(g74::Cycle),
+    /// A G73 cycle (G73.PATH): its pass and cursor; the contour is the expander's.
+    Pattern(g73::Cycle),
 }
 
 impl Run {
@@ -52,6 +55,7 @@ impl Run {
             Run::Rough(c) => c.next_event(pos, contour),
             Run::Finish(c) => c.next_event(pos, contour),
             Run::Peck(c) => c.next_event(pos),
+            Run::Pattern(c) => c.next_event(pos, contour),
         }
     }
 
@@ -69,6 +73,7 @@ impl Run {
             Run::Rough(c) => c.fill(pos, out, contour),
             Run::Finish(c) => fill_each(out, || c.next_event(pos, contour)),
             Run::Peck(c) => fill_each(out, || c.next_event(pos)),
+            Run::Pattern(c) => fill_each(out, || c.next_event(pos, contour)),
             Run::Move(m) => {
                 let m = *m;
                 let Some(slot) = out.first_mut() else {
