@@ -51,6 +51,8 @@ mod finish;
 pub mod fixed;
 mod g73;
 mod g74;
+mod g83;
+mod g84;
 pub mod g162;
 /// Public (hidden) only so that the proof harnesses (`cycle-proofs`) can drive one G90/G94 cycle
 /// below the lexer; not part of the API.
@@ -282,3 +284,6 @@ mod g74_tests;
 
 #[cfg(test)]
 mod g73_tests;
+
+#[cfg(test)]
+mod g83_tests;

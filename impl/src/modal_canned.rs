@@ -8,8 +8,11 @@ use super::{Machine, Vals};
 use crate::config::Params;
 use crate::contour;
 use crate::g73;
+use crate::g83;
+use crate::g84;
 use crate::g74::{self, PeckCode};
 use crate::run::Run;
+use crate::words::{integer_in, At};
 use crate::Program;
 use cycle_vocab::{Alarm, AlarmCode, Rule};
 
@@ -111,10 +114,43 @@ impl Machine {
 }
 
 impl Machine {
-    pub(super) fn g83(&mut self, _v: &Vals, line: u32, _run: &mut Run) -> Result<(), Alarm> {
-        Err(Alarm::new(AlarmCode::UnsupportedCode, Some(b'G'), Rule::PrjSupported, line))
+    /// A drilling block's words: the bottom from Z (absolute) or W (from the initial level) —
+    /// omitted, the initial level; R, Q, P omitted 0 (P is 0 … 99 999 999 here).
+    fn drill_words(&self, v: &Vals, feed: i64) -> g83::Words {
+        g83::Words {
+            r: v.r.unwrap_or(0),
+            bottom: Self::end_point(v, self.pos, self.pos).1,
+            q: v.q.unwrap_or(0),
+            dwell: v.p.and_then(|p| u32::try_from(p).ok()).unwrap_or(0),
+            feed,
+        }
     }
-    pub(super) fn g84(&mut self, _v: &Vals, line: u32, _run: &mut Run) -> Result<(), Alarm> {
-        Err(Alarm::new(AlarmCode::UnsupportedCode, Some(b'G'), Rule::PrjSupported, line))
+
+    /// G83.FORMAT, G83.PECK: (4) the feed; (5) the levels and the pass bound; the run.
+    pub(super) fn g83(&mut self, v: &Vals, line: u32, run: &mut Run) -> Result<(), Alarm> {
+        let feed = self.cycle_feed(v, line)?;
+        let c = g83::cycle(self.pos, &self.drill_words(v, feed), self.params.max_passes, line)?;
+        *run = Run::Drill(c);
+        Ok(())
+    }
+
+    /// G84.FORMAT, G84.PATH: (4) the feed; (5) rigid tapping armed (M29, else `UNSUPPORTED` on
+    /// G), under G98 the last S (none: `MISSING WORD S`; an integer 1 … 99 999, else `OUT OF
+    /// RANGE` on S), the lead, the levels; the run. The rigid-tapping mode ends with the cycle.
+    pub(super) fn g84(&mut self, v: &Vals, line: u32, run: &mut Run) -> Result<(), Alarm> {
+        let feed = self.cycle_feed(v, line)?;
+        if !self.rigid {
+            return Err(Alarm::new(AlarmCode::Unsupported, Some(b'G'), Rule::G84Format, line));
+        }
+        self.rigid = false;
+        let speed = if self.per_minute {
+            let at = At { letter: b'S', line };
+            let s = self.spindle.ok_or(at.alarm(AlarmCode::MissingWord, Rule::G84Format))?;
+            Some(integer_in(s, 1, 99_999, Rule::G84Format, at)?)
+        } else {
+            None
+        };
+        *run = Run::Tap(g84::cycle(self.pos, &self.drill_words(v, feed), speed, line)?);
+        Ok(())
     }
 }

@@ -54,6 +54,11 @@ impl Machine {
             (Kind::PatternSecond(_), b'K') => v.k = Some(signed_length(n, grid, at)?),
             (Kind::PatternSecond(_), b'P') => v.p = Some(integer_in(n, 1, 99_999, Rule::CntPq, at)?),
             (Kind::PatternSecond(_), b'Q') => v.q = Some(integer_in(n, 1, 99_999, Rule::CntPq, at)?),
+            // G83/G84: R a signed length; Q (G83) the peck in increments, an integer 0 … N
+            // (0: one feed); P the dwell in ms, an integer 0 … 99 999 999.
+            (Kind::G83 | Kind::G84, b'R') => v.r = Some(signed_length(n, grid, at)?),
+            (Kind::G83, b'Q') => v.q = Some(integer_in(n, 0, MAX_LENGTH, Rule::ComRanges, at)?),
+            (Kind::G83 | Kind::G84, b'P') => v.p = Some(integer_in(n, 0, 99_999_999, Rule::ComRanges, at)?),
             // NC201.XMODE: X of G00/G01 by `x_radius`.
             (_, b'X') if self.config.dialect == Dialect::Nc201 => v.x = Some(self.x_word(n, at)?),
             // G90.FORMAT, G94.FORMAT: the taper, a signed length (I is no lead here).

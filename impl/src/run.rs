@@ -8,6 +8,8 @@ use crate::finish;
 use crate::g162;
 use crate::g73;
 use crate::g74;
+use crate::g83;
+use crate::g84;
 use crate::g90;
 use crate::rough::Roughing;
 use cycle_vocab::{Event, Move};
@@ -35,6 +37,10 @@ pub enum Run {
     Peck(g74::Cycle),
     /// A G73 cycle (G73.PATH): its pass and cursor; the contour is the expander's.
     Pattern(g73::Cycle),
+    /// A G83 cycle (G83.PECK).
+    Drill(g83::Cycle),
+    /// A G84 cycle (G84.PATH).
+    Tap(g84::Cycle),
 }
 
 impl Run {
@@ -56,6 +62,8 @@ impl Run {
             Run::Finish(c) => c.next_event(pos, contour),
             Run::Peck(c) => c.next_event(pos),
             Run::Pattern(c) => c.next_event(pos, contour),
+            Run::Drill(c) => c.next_event(pos),
+            Run::Tap(c) => c.next_event(pos),
         }
     }
 
@@ -74,6 +82,8 @@ impl Run {
             Run::Finish(c) => fill_each(out, || c.next_event(pos, contour)),
             Run::Peck(c) => fill_each(out, || c.next_event(pos)),
             Run::Pattern(c) => fill_each(out, || c.next_event(pos, contour)),
+            Run::Drill(c) => fill_each(out, || c.next_event(pos)),
+            Run::Tap(c) => fill_each(out, || c.next_event(pos)),
             Run::Move(m) => {
                 let m = *m;
                 let Some(slot) = out.first_mut() else {
