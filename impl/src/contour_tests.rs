@@ -843,7 +843,7 @@ fn flow_and_modal_state() {
 
 /// Both ways of taking the stream: `fill` equals the iterator for every buffer size, on the
 /// seed's examples, the bound cases and alarms inside contours.
-fn assert_fill_agrees(program: &str, config: Config, sizes: &[usize]) {
+pub(crate) fn assert_fill_agrees(program: &str, config: Config, sizes: &[usize]) {
     let mut want = Vec::new();
     let mut want_alarm = None;
     for item in Expander::new(program.as_bytes(), config) {

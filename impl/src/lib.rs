@@ -1,6 +1,7 @@
 //! Production expander of the lathe thread cycles G92, G76, G78, FANUC-style G76 and G162
 //! (`nc201`), of the thread moves G32, G33, G34, of the single cutting cycles G90, G94, of arcs
-//! G02/G03 and of the contour cycles G70, G71, G72 (M003).
+//! G02/G03, of the contour cycles G70, G71, G72 and of the canned cycles G73, G74, G75, G83, G84
+//! (M003).
 //!
 //! `no_std`, no heap, no floating point, no `unsafe`, no panics: [`Expander`] is a streaming
 //! iterator over the trace events of a program (PRJ.TRACE), computed on the integer grid with
@@ -16,12 +17,15 @@
 //! checks and its own move state machine), `thread_move` (G32/G33/G34), `g90` (G90/G94),
 //! [`arc`] (G02/G03: centres, tolerance, sweeps, exact roundings), [`contour`] (the contour
 //! buffer, CNT.FIND for G70), `rough` (G71/G72: checks, layer count, layers, semi-finish pass),
-//! `finish` (G70), `config`.
+//! `finish` (G70), `g73` (pattern repeating over the contour buffer), `g74` (G74/G75 pecks and
+//! columns), `g83` (peck drilling), `g84` (rigid tapping), `config`.
 //!
 //! **Memory.** An [`Expander`] holds the block being read (~0.5 KB), the machine state, what
 //! runs, and the contour buffer of the contour cycles: [`contour::MAX_BLOCKS`] (CNT.MAX,
 //! 1 000) elements of 48 bytes, 48 000 bytes, initialised on the first contour cycle (a
-//! program without one writes none of it). Nothing else grows with the program.
+//! program without one writes none of it; G73 shares it). Nothing else grows with the program:
+//! the canned cycles keep O(1) state (their pass, column, peck) and count their passes in closed
+//! form before any motion.
 //!
 //! **Magnitudes.** Every word and parameter is at most N = 999 999 999 < 2^30 increments
 //! (COM.RANGES) and the start point too, so a block moves the machine by at most N from where it
@@ -49,6 +53,10 @@ pub mod contour;
 mod emit;
 mod finish;
 pub mod fixed;
+mod g73;
+mod g74;
+mod g83;
+mod g84;
 pub mod g162;
 /// Public (hidden) only so that the proof harnesses (`cycle-proofs`) can drive one G90/G94 cycle
 /// below the lexer; not part of the API.
@@ -274,3 +282,12 @@ mod arc_tests;
 
 #[cfg(test)]
 mod contour_tests;
+
+#[cfg(test)]
+mod g74_tests;
+
+#[cfg(test)]
+mod g73_tests;
+
+#[cfg(test)]
+mod g83_tests;

@@ -5,6 +5,7 @@
 
 use crate::config::Params;
 use crate::fixed::sat;
+use crate::g74::PeckCode;
 use crate::g90::{CutCode, CutState};
 use crate::g92::{G92State, PullMemo};
 use crate::lex::{letter_bit, letter_mask, Block};
@@ -23,6 +24,8 @@ mod cycles;
 mod values;
 #[path = "modal_contour.rs"]
 mod contour_blocks;
+#[path = "modal_canned.rs"]
+mod canned;
 
 /// The modal motion mode.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -58,6 +61,16 @@ enum Kind {
     /// G71/G72 without P and Q (Δd, e), and with them (G71.UW).
     RoughFirst(Axis),
     RoughSecond(Axis),
+    /// G74/G75 without X U Z W P Q (e), and with any of them (G74.FORMAT, G75.FORMAT).
+    PeckFirst(PeckCode),
+    PeckSecond(PeckCode),
+    /// G73 without P and Q (Δi, Δk, d); with P or Q: format (a)'s second block (`false`) or
+    /// format (b) (`true`, with I, K or D) (G73.FORMAT).
+    PatternFirst,
+    PatternSecond(bool),
+    /// G83 (G83.FORMAT), G84 (G84.FORMAT).
+    G83,
+    G84,
 }
 
 /// TNRC.CODES: the nose-radius compensation in force (G40 none, G41 left, G42 right).
@@ -77,6 +90,8 @@ struct Codes {
     end: bool,
     /// NC201.ABSINC: G90 (`Some(false)`) or G91 (`Some(true)`) under nc201.
     absinc: Option<bool>,
+    /// G80 was written (it ends an M29 not followed by G84).
+    g80: bool,
 }
 
 /// The machine state carried from block to block.
@@ -104,6 +119,17 @@ pub struct Machine {
     /// G71.PARAM: the values of the last G71 and G72 first blocks.
     g71: FirstValues,
     g72: FirstValues,
+    /// G74.E: the return e kept by the last G74 and G75 first blocks (radius increments).
+    g74_e: i64,
+    g75_e: i64,
+    /// G73.FORMAT: Δi (radius), Δk, d kept by the last G73 first block.
+    g73: canned::PatternValues,
+    /// G84.FORMAT: rigid tapping armed (M29 since the last G80/G84 cycle).
+    rigid: bool,
+    /// G98 (feed per minute) in force; G99 at the start (G84.FORMAT).
+    per_minute: bool,
+    /// The last S word written (G84.FORMAT: the speed of the lead under G98).
+    spindle: Option<crate::number::Number>,
 }
 
 /// The converted words of one block; `None` where absent.
@@ -164,6 +190,14 @@ fn allowed(kind: Kind, dialect: Dialect) -> u32 {
         (Kind::G70 | Kind::RoughSecond(_), _) => const { letter_mask(b"FPQUW") },
         (Kind::RoughFirst(Axis::G71), _) => const { letter_mask(b"RU") },
         (Kind::RoughFirst(Axis::G72), _) => const { letter_mask(b"RW") },
+        // G74.FORMAT, G75.FORMAT, G73.FORMAT, G83/G84 words.
+        (Kind::PeckFirst(_), _) => const { letter_mask(b"R") },
+        (Kind::PeckSecond(_), _) => const { letter_mask(b"FPQRUWXZ") },
+        (Kind::PatternFirst, _) => const { letter_mask(b"RUW") },
+        (Kind::PatternSecond(false), _) => const { letter_mask(b"FPQUW") },
+        (Kind::PatternSecond(true), _) => const { letter_mask(b"DFIKPQUW") },
+        (Kind::G83, _) => const { letter_mask(b"FPQRWZ") },
+        (Kind::G84, _) => const { letter_mask(b"FPRWZ") },
     }
 }
 
@@ -188,6 +222,12 @@ impl Machine {
             comp: Comp::Off,
             g71: FirstValues { depth: params.p5132_rough_depth, retract: params.p5133_rough_retract },
             g72: FirstValues { depth: params.p5132_rough_depth, retract: params.p5133_rough_retract },
+            g74_e: params.p5139_peck_return,
+            g75_e: params.p5139_peck_return,
+            g73: canned::PatternValues::defaults(&params),
+            rigid: false,
+            per_minute: false,
+            spindle: None,
         }
     }
 
@@ -197,7 +237,12 @@ impl Machine {
         *run = Run::Idle;
         let line = b.line;
         let at = |letter: u8| At { letter, line };
-        let Codes { motion, end, absinc } = self.codes(b)?;
+        let Codes { motion, end, absinc, g80 } = self.codes(b)?;
+        // G84.FORMAT: G80 ends rigid tapping, then an M29 of this block arms it; the last S.
+        self.rigid = (self.rigid && !g80) || b.get(b'M').is_some_and(|m| m.is(29));
+        if let Some(s) = b.get(b'S') {
+            self.spindle = Some(s);
+        }
         let nc201 = self.config.dialect == Dialect::Nc201;
         let axis = if nc201 {
             b.has(b'X') || b.has(b'Z')
@@ -223,6 +268,18 @@ impl Machine {
             Some(71) => Kind::RoughFirst(Axis::G71),
             Some(72) if b.has(b'P') || b.has(b'Q') => Kind::RoughSecond(Axis::G72),
             Some(72) => Kind::RoughFirst(Axis::G72),
+            // G73.FORMAT: P or Q makes the second block; I, K or D format (b).
+            Some(73) if b.has(b'P') || b.has(b'Q') => {
+                Kind::PatternSecond(b.has(b'I') || b.has(b'K') || b.has(b'D'))
+            }
+            Some(73) => Kind::PatternFirst,
+            // G74.FORMAT, G75.FORMAT: any of X U Z W P Q makes the second block.
+            Some(74) if b.mask() & const { letter_mask(b"PQUWXZ") } != 0 => Kind::PeckSecond(PeckCode::G74),
+            Some(74) => Kind::PeckFirst(PeckCode::G74),
+            Some(75) if b.mask() & const { letter_mask(b"PQUWXZ") } != 0 => Kind::PeckSecond(PeckCode::G75),
+            Some(75) => Kind::PeckFirst(PeckCode::G75),
+            Some(83) => Kind::G83,
+            Some(84) => Kind::G84,
             Some(2) => Kind::Arc(true),
             Some(3) => Kind::Arc(false),
             Some(1) => Kind::Feed,
@@ -294,6 +351,12 @@ impl Machine {
             Kind::G70 => self.g70(&v, line, run, prog)?,
             Kind::RoughFirst(code) => self.rough_first(code, &v),
             Kind::RoughSecond(code) => self.rough_second(code, &v, line, run, prog)?,
+            Kind::PeckFirst(code) => self.peck_first(code, &v),
+            Kind::PeckSecond(code) => self.peck_second(code, &v, line, run)?,
+            Kind::PatternFirst => self.pattern_first(&v),
+            Kind::PatternSecond(b_format) => self.pattern_second(b_format, &v, line, run, prog)?,
+            Kind::G83 => self.g83(&v, line, run)?,
+            Kind::G84 => self.g84(&v, line, run)?,
         }
         Ok(end)
     }
@@ -312,6 +375,7 @@ impl Machine {
         let mut absinc = None;
         let mut absincs = 0u32;
         let mut tnrc = false;
+        let mut g80 = false;
         for g in b.g_codes() {
             if g.point || g.negative {
                 return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjSupported));
@@ -321,17 +385,24 @@ impl Machine {
                 2 | 3 if !nc201 => {}
                 // M003 / M001 / M002 codes are not defined for the M004 controller, and G162 only
                 // for it (PRJ.DIALECT).
-                92 | 76 | 32 | 33 | 34 | 90 | 94 | 50 | 70 | 71 | 72 if !nc201 => {}
+                92 | 76 | 32 | 33 | 34 | 90 | 94 | 50 | 70 | 71 | 72 | 73 | 74 | 75 | 83 | 84 if !nc201 => {}
+                // G80 (no motion): ends an armed M29.
+                80 if !nc201 => {
+                    g80 = true;
+                    continue;
+                }
                 78 if dialect == Dialect::Gsk => {}
                 162 if nc201 => {}
                 40..=42 | 96 | 98 if !nc201 => {
                     tnrc |= matches!(g.mantissa, 40..=42);
+                    // G98: feed per minute (G84.FORMAT's lead).
+                    self.per_minute |= g.mantissa == 98;
                     continue;
                 }
                 // Under nc201 G90 is the absolute mode (below) and G94 is not defined; nor are the
                 // codes of the contour cycles (M003).
                 32 | 33 | 34 | 76 | 78 | 92 | 94 | 162 => return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjDialect)),
-                2 | 3 | 41 | 42 | 50 | 70 | 71 | 72 | 96 | 98 if nc201 => {
+                2 | 3 | 41 | 42 | 50 | 70 | 71 | 72 | 73 | 74 | 75 | 80 | 83 | 84 | 96 | 98 if nc201 => {
                     return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjDialect))
                 }
                 90 | 91 if nc201 => {
@@ -345,7 +416,11 @@ impl Machine {
                 21 if self.config.grid.units != Units::Metric => {
                     return Err(g_alarm(AlarmCode::Unsupported, Rule::ComUnits))
                 }
-                18 | 20 | 21 | 40 | 97 | 99 => continue,
+                99 => {
+                    self.per_minute = false;
+                    continue;
+                }
+                18 | 20 | 21 | 40 | 97 => continue,
                 _ => return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjSupported)),
             }
             motions += 1;
@@ -372,7 +447,7 @@ impl Machine {
         if tnrc || b.has(b'T') {
             self.compensation(b, motion)?;
         }
-        Ok(Codes { motion, end, absinc })
+        Ok(Codes { motion, end, absinc, g80 })
     }
 
     /// TNRC.NOARC, TNRC.SWITCH, TNRC.RADIUS (check step 2, after the two-motion-codes conflict):

@@ -100,7 +100,7 @@ impl Machine {
 
     /// (4) of a cycle's P/Q block: the feed (neither F nor a modal feed: `MISSING WORD F`,
     /// COM.LEAD), then P, then Q (`MISSING WORD`, CNT.PQ).
-    fn cycle_words(&self, v: &Vals, line: u32) -> Result<(i64, u64, u64), Alarm> {
+    pub(super) fn cycle_words(&self, v: &Vals, line: u32) -> Result<(i64, u64, u64), Alarm> {
         let missing = |word: u8, rule: Rule| Alarm::new(AlarmCode::MissingWord, Some(word), rule, line);
         let feed = self.feed.ok_or(missing(b'F', Rule::ComLead))?;
         let p = v.p.ok_or(missing(b'P', Rule::CntPq))?;
@@ -118,7 +118,7 @@ impl Machine {
     /// order). Returns the ns block's motion code (CNT.FIRST). Work: one pass over at most
     /// [`MAX_BLOCKS`] blocks, each read once.
     #[allow(clippy::too_many_arguments)]
-    fn read_contour(
+    pub(super) fn read_contour(
         &self,
         reader: &mut Blocks<'_>,
         start: (i64, i64),

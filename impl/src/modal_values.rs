@@ -41,6 +41,24 @@ impl Machine {
             (Kind::RoughFirst(Axis::G71), b'R') => v.r = Some(n_len(0, Rule::G71Retract)?),
             (Kind::RoughFirst(Axis::G72), b'W') => v.depth = Some(n_len(1, Rule::G72Depth)?),
             (Kind::RoughFirst(Axis::G72), b'R') => v.r = Some(n_len(0, Rule::G72Depth)?),
+            // G74.FORMAT, G75.FORMAT (G74.UNITS): e, Δd, P (Δi), Q (Δk) unsigned lengths 0 … N,
+            // mm without a decimal point in every dialect.
+            (Kind::PeckFirst(_) | Kind::PeckSecond(_), b'R') => v.r = Some(n_len(0, Rule::ComRanges)?),
+            (Kind::PeckSecond(_), b'P') => v.p = Some(n_len(0, Rule::ComRanges)?),
+            (Kind::PeckSecond(_), b'Q') => v.q = Some(n_len(0, Rule::ComRanges)?),
+            // G73.FORMAT, G73.COUNT: d (R of the first block, D of format (b)) an integer ≥ 1;
+            // format (b)'s I (Δi, radius) and K signed lengths; P, Q sequence numbers.
+            (Kind::PatternFirst, b'R') => v.r = Some(integer_in(n, 1, MAX_LENGTH, Rule::G73Count, at)?),
+            (Kind::PatternSecond(_), b'D') => v.d = Some(integer_in(n, 1, MAX_LENGTH, Rule::G73Count, at)?),
+            (Kind::PatternSecond(_), b'I') => v.i = Some(signed_length(n, grid, at)?),
+            (Kind::PatternSecond(_), b'K') => v.k = Some(signed_length(n, grid, at)?),
+            (Kind::PatternSecond(_), b'P') => v.p = Some(integer_in(n, 1, 99_999, Rule::CntPq, at)?),
+            (Kind::PatternSecond(_), b'Q') => v.q = Some(integer_in(n, 1, 99_999, Rule::CntPq, at)?),
+            // G83/G84: R a signed length; Q (G83) the peck in increments, an integer 0 … N
+            // (0: one feed); P the dwell in ms, an integer 0 … 99 999 999.
+            (Kind::G83 | Kind::G84, b'R') => v.r = Some(signed_length(n, grid, at)?),
+            (Kind::G83, b'Q') => v.q = Some(integer_in(n, 0, MAX_LENGTH, Rule::ComRanges, at)?),
+            (Kind::G83 | Kind::G84, b'P') => v.p = Some(integer_in(n, 0, 99_999_999, Rule::ComRanges, at)?),
             // NC201.XMODE: X of G00/G01 by `x_radius`.
             (_, b'X') if self.config.dialect == Dialect::Nc201 => v.x = Some(self.x_word(n, at)?),
             // G90.FORMAT, G94.FORMAT: the taper, a signed length (I is no lead here).

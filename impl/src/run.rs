@@ -6,6 +6,10 @@ use crate::contour::Contour;
 use crate::emit::{self, emit};
 use crate::finish;
 use crate::g162;
+use crate::g73;
+use crate::g74;
+use crate::g83;
+use crate::g84;
 use crate::g90;
 use crate::rough::Roughing;
 use cycle_vocab::{Event, Move};
@@ -29,6 +33,14 @@ pub enum Run {
     Rough(Roughing),
     /// A G70 cycle (G70.PATH).
     Finish(finish::Cycle),
+    /// A G74 or G75 cycle (G74.PECK, G74.COLUMN, G75.*).
+    Peck(g74::Cycle),
+    /// A G73 cycle (G73.PATH): its pass and cursor; the contour is the expander's.
+    Pattern(g73::Cycle),
+    /// A G83 cycle (G83.PECK).
+    Drill(g83::Cycle),
+    /// A G84 cycle (G84.PATH).
+    Tap(g84::Cycle),
 }
 
 impl Run {
@@ -48,6 +60,10 @@ impl Run {
             Run::Cut(c) => c.next_event(pos),
             Run::Rough(c) => c.next_event(pos, contour),
             Run::Finish(c) => c.next_event(pos, contour),
+            Run::Peck(c) => c.next_event(pos),
+            Run::Pattern(c) => c.next_event(pos, contour),
+            Run::Drill(c) => c.next_event(pos),
+            Run::Tap(c) => c.next_event(pos),
         }
     }
 
@@ -64,6 +80,10 @@ impl Run {
             Run::Cut(c) => fill_each(out, || c.next_event(pos)),
             Run::Rough(c) => c.fill(pos, out, contour),
             Run::Finish(c) => fill_each(out, || c.next_event(pos, contour)),
+            Run::Peck(c) => fill_each(out, || c.next_event(pos)),
+            Run::Pattern(c) => fill_each(out, || c.next_event(pos, contour)),
+            Run::Drill(c) => fill_each(out, || c.next_event(pos)),
+            Run::Tap(c) => fill_each(out, || c.next_event(pos)),
             Run::Move(m) => {
                 let m = *m;
                 let Some(slot) = out.first_mut() else {

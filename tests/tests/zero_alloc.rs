@@ -99,6 +99,13 @@ fn expanding_any_cycle_allocates_nothing() {
         ("G0 X30 Z5\nG162 X24 Z-20 H500 P9.999 Q0.001 V1 A29.5 F1.5 B90 I-0.1 J180\n", nc201), // 9 999 passes
         ("G0 X30 Z5\nG34 X30 Z-20 F2 K-0.05\nG34 W-1 F2 K-5\n", metric), // ends in the G34 bound alarm
         ("G0 X50 Z2\nG90 X40 Z-40 I-5 F0.3\nX39\nX38\nG94 X20 Z-1 K-1\nZ-2\nG90 X40 Z2\n", metric), // the last: GEOMETRY on Z (W = 0)
+        // G73 (both formats), G74, G75, G83, G84 (#21), near their bounds and ending in alarms.
+        ("G0 X50 Z10\nG73 U18 W5 R10\nG73 P50 Q100 U0.5 W0.5 F100\nN50 G01 X0 Z1\nN60 G03 X12 W-6 R6\nN70 G01 W-10\nN80 X20 W-15\nN90 W-13\nN100 G02 X34 W-7 R7\nG70 P50 Q100 F30\n", metric),
+        ("G0 X50 Z5\nG73 P1 Q2 I1 K1 D5000 F1\nN1 G0 X10\nN2 G1 Z-10\nG73 P1 Q2 I1 K1 D10001 F1\nN1 G0 X10\nN2 G1 Z-10\n", metric), // 5 000 passes, then the bound
+        ("G0 X0 Z2\nG74 R1\nG74 Z-12 Q5 F30\nG74 Z-10 Q0.001 F1\nG00 X20 Z1\nG74 R0.5\nG74 X40 Z-5 P3 Q2 R0.2 F0.05\nG74 Z-999999.999 Q0.001\n", metric), // 10 000 pecks; bound
+        ("G0 X42 Z22\nG75 R1\nG75 X30 Z10 P3 Q2.9 F30\nG75 X40 Z-20 P2 Q3 R0.3\nG75 X30 Z10 P0 Q1\n", metric), // the last: MISSING WORD P
+        ("G0 X0 Z3\nG83 Z-30 R0.5 Q2000 P500 F0.2\nG83 Z-10 Q1 F1\nG83 Z-10.001 Q1 F1\n", metric), // 10 000 pecks; bound
+        ("G0 X0 Z5\nG98 M29 S60 G84 Z-21 R2 P200 F60 G80\nG99 M29 G84 Z-15 R-3 F1.25\nG84 Z-5 F1\n", metric), // the last: no M29
     ]);
     let mut total_events = 0;
     for (program, config) in &programs {

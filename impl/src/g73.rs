@@ -1,0 +1,120 @@
+//! G73, pattern repeating (M003; docs/INTERPRETATION.md, "G73"): d passes, each the contour
+//! translated by T_n = (2·round(Δi·(d − n)/d) + Δu, round(Δk·(d − n)/d) + Δw) (G73.DEPTH,
+//! G73.PATH), then one rapid back to A. The contour is the expander's buffer (CNT.MAX), read once
+//! and walked d times by index; the cycle keeps only its pass, element and offset — O(1) state.
+//!
+//! Bounds: Δi, Δk, Δu, Δw ≤ N < 2^30 and d ≤ 10^9, so Δi·(d − n) < 2^60 in `i128` exactly;
+//! each offset is below 2^32 and each translated coordinate stays below 2^62 (lib.rs).
+
+use crate::contour::{Contour, Kind};
+use crate::emit::emit;
+use crate::fixed::{div_round_signed, sat};
+use cycle_vocab::{Alarm, AlarmCode, Event, Move, Pass, PassKind, Rule};
+
+/// The cycle's values: Δi (radius) and Δk — the total escape — the count d, the allowances Δu
+/// (diameter) and Δw, the roughing feed, and the word that gave d (R in format (a), D in (b)).
+#[derive(Clone, Copy, Debug)]
+pub struct Words {
+    pub di: i64,
+    pub dk: i64,
+    pub d: i64,
+    pub allowance: (i64, i64),
+    pub feed: i64,
+    pub count_word: u8,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Phase {
+    Header,
+    ToStart,
+    Contour,
+    Return,
+    Done,
+}
+
+/// A G73 cycle whose checks passed.
+#[derive(Clone, Copy, Debug)]
+pub struct Cycle {
+    a: (i64, i64),
+    w: Words,
+    /// The pass (1 … d) and its offset T_n.
+    n: i64,
+    shift: (i64, i64),
+    elem: usize,
+    len: usize,
+    phase: Phase,
+}
+
+/// Pass `n`'s radius and Z escapes: round(Δi·(d − n)/d), round(Δk·(d − n)/d), half away from
+/// zero (G73.DEPTH).
+fn escape(w: &Words, n: i64) -> (i64, i64) {
+    let left = i128::from(w.d.saturating_sub(n));
+    let d = i128::from(w.d);
+    (sat(div_round_signed(i128::from(w.di) * left, d)), sat(div_round_signed(i128::from(w.dk) * left, d)))
+}
+
+impl Cycle {
+    /// The cycle from A = `a` over `contour` (its checks — CNT.FIND, CNT.MAX, the blocks',
+    /// CNT.FIRST — passed): step 5's last check, d > `max_passes` (`TOO MANY PASSES` on the word
+    /// that gave d, PRJ.MAXPASS), before any motion.
+    pub fn new(a: (i64, i64), w: &Words, contour: &Contour, max_passes: u32, line: u32) -> Result<Cycle, Alarm> {
+        if w.d > i64::from(max_passes) {
+            return Err(Alarm::new(AlarmCode::TooManyPasses, Some(w.count_word), Rule::PrjMaxPass, line));
+        }
+        Ok(Cycle { a, w: *w, n: 1, shift: (0, 0), elem: 0, len: contour.len(), phase: Phase::Header })
+    }
+
+    /// The next event, updating the machine position; `None` when the cycle is done. PRJ.NOOP:
+    /// a move to the current position is not emitted. Bounded work: within a pass only the
+    /// rapid to the start and the ns element can be moves to where the tool stands (later
+    /// elements each move), so at most two moves are skipped per call.
+    pub fn next_event(&mut self, pos: &mut (i64, i64), contour: &Contour) -> Option<Event> {
+        loop {
+            let m = match self.phase {
+                Phase::Header => {
+                    let (ei, ek) = escape(&self.w, self.n);
+                    self.shift = (ei.saturating_mul(2).saturating_add(self.w.allowance.0), ek.saturating_add(self.w.allowance.1));
+                    self.elem = 0;
+                    self.phase = Phase::ToStart;
+                    let index = u32::try_from(self.n).unwrap_or(u32::MAX);
+                    let diameter_depth = ei.saturating_mul(2).saturating_abs();
+                    return Some(Event::Pass(Pass { index, kind: PassKind::Rough, diameter_depth, rule: Rule::G73Depth }));
+                }
+                Phase::ToStart => {
+                    self.phase = Phase::Contour;
+                    Move::rapid(self.a.0.saturating_add(self.shift.0), self.a.1.saturating_add(self.shift.1), Rule::G73Path)
+                }
+                Phase::Contour => {
+                    if self.elem >= self.len {
+                        if self.n < self.w.d {
+                            self.n += 1;
+                            self.phase = Phase::Header;
+                        } else {
+                            self.phase = Phase::Return;
+                        }
+                        continue;
+                    }
+                    let e = contour.get(self.elem);
+                    self.elem += 1;
+                    let (x, z) = (e.x.saturating_add(self.shift.0), e.z.saturating_add(self.shift.1));
+                    match e.kind {
+                        Kind::Rapid => Move::rapid(x, z, Rule::G73Path),
+                        Kind::Feed => Move::feed(x, z, self.w.feed, Rule::G73Path),
+                        Kind::Arc(cw) => {
+                            let (cx, cz) = (e.cx.saturating_add(self.shift.0), e.cz.saturating_add(self.shift.1));
+                            Move::arc(cw, x, z, cx, cz, self.w.feed, Rule::G73Path)
+                        }
+                    }
+                }
+                Phase::Return => {
+                    self.phase = Phase::Done;
+                    Move::rapid(self.a.0, self.a.1, Rule::G73Path)
+                }
+                Phase::Done => return None,
+            };
+            if let Some(ev) = emit(m, pos) {
+                return Some(ev);
+            }
+        }
+    }
+}
