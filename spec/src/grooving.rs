@@ -220,11 +220,17 @@ fn emit(cy: &Cycle, out: &mut Out) -> Result<(), Alarm> {
     let (p_letter, _) = ax.letters();
     let depth = (ax.p(cy.e) - ax.p(a)).abs() * half_units(p_letter);
     let sigma = (ax.q(cy.e) - ax.q(a)).signum();
-    let mut columns = core::iter::once(ax.q(a)).chain(stops(ax.q(a), ax.q(cy.e), cy.step)).peekable();
+    let columns = core::iter::once(ax.q(a)).chain(stops(ax.q(a), ax.q(cy.e), cy.step));
     let mut j: u32 = 0;
-    while let Some(q) = columns.next() {
+    for q in columns {
         j += 1;
         out.pass(j, PassKind::Rough, depth, r.column, line)?;
+        if j > 1 {
+            // "then a rapid along the step axis to the next column" — after its header, as every
+            // cycle's pass header comes before the pass's first move.
+            let to = ax.point(ax.p(a), q);
+            out.rapid(to.0, to.1, r.column, line)?;
+        }
         pecks_of_column(cy, q, out)?;
         let mut at_q = q;
         if j > 1 {
@@ -235,10 +241,9 @@ fn emit(cy: &Cycle, out: &mut Out) -> Result<(), Alarm> {
         }
         let up = ax.point(ax.p(a), at_q);
         out.rapid(up.0, up.1, r.column, line)?;
-        let next_q = columns.peek().copied().unwrap_or(ax.q(a));
-        let next = ax.point(ax.p(a), next_q);
-        out.rapid(next.0, next.1, r.column, line)?;
     }
+    // "after the last column, a rapid along the step axis back to A."
+    out.rapid(a.0, a.1, r.column, line)?;
     Ok(())
 }
 

@@ -78,7 +78,7 @@ macro_rules! family_campaigns {
     )*};
 }
 
-family_campaigns!(g92, g76, g78, f76, g162, g32, g90, g94, g71, g72, g70);
+family_campaigns!(g92, g76, g78, f76, g162, g32, g90, g94, g71, g72, g70, g73, g74, g75, g83, g84);
 
 /// The campaign of the registry family `name`.
 fn family_campaign(name: &str) {

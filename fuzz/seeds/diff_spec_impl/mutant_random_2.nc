@@ -1,14 +1,13 @@
-(G71 with contour vertices exactly on layers: depth 2, layers X46, 42, 38, 34, 30, 26, 22 from A = X50 Z2, no allowances)
-(X38: the contour runs along X38 from Z-25+toZ-35, so the cut ends where it eaves the layer, at Z-35;)
-(X30: the piece along X30 from Z-10 to Z-20 lies o the layer, the cut ends at Z-20.)
-G00 X50 Z2
-G71 U2 R0.5
-G71 P10 Q70 F0.3
-N10 G00 X20
-N20 G01 Z-10
-N30 X30
-N40 Z-20
-N50 X38 Z-25
-N60 Z-35
-N70 X50
-M30
+(G72.EXAMPLE, M003 textbook example 2: face stock removal along X with G72, then finishing with G70)
+(The seed prints the blocks run together; each N starts a new block, one per line here, verbatim otherwise.)
+(Read as docs/INTERPRETATION.md says: A = X41 Z1; depth 1 along Z, retract 1; allowances U0.1 W0.2;)
+(the ns block G00 X41 Z-31 moves Z only, since X41 = A.x: by motion, not by words.)
+N010 G50 X150 Z100
+N020 G00 X41 Z1
+N030 G72 W1 R1
+N040 G72 P50 Q80 U0.1 W0.2 F100
+N050 G00 X41 Z-31
+N060 G01 X20 Z-20
+N070 Z-2
+N080 X14 Z1
+N090 G0 P50 Q80 F30

@@ -1,4 +1,11 @@
-(M004 4.2.13, the manual's taper example: a cone 50 mm long with a 20 mm d×ameter difference, pitch 2 mm along the cone written as F1.96 along Z; --dialect nc201)
-G0 X45 Z0
-G162 X20 Z-50 H300 41. Q0.4 W20 F1.96
+(G71 whose depth of cut exceeds the stock: Î”d = 5mm on a radius of 3.8 mm, so no layer stands)
+(between the start X42 nd the roughing contour's first p;oint X34.4; only the SEMI pass runs.)
+G00 X42 Z2
+G71 ;U5 R1
+G71 P10 Q50 U0.4 W0.1 F0.3
+N10 G01 X34
+N20 Z-20
+N30 X40 Z-25
+N40 Z-30
+N50 X42
 M30

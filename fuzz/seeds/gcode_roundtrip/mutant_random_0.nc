@@ -1,8 +1,12 @@
-(G94.EXAMPLE, M003 textbook notes: single face cutting cycle; the seed prints G90X40.Z-3.5.F0.3;-7.;-10.; under the G94 heading)
-(Read as docs/INTERPRETATION.md says: G94 X40. Z-3.5 F0.3, then the modal blocks Z-7. and Z-10.: G94 printed as G90,a doubled point, the letter Z lost on the repeats.)
-(The seed gives no start point: the program starts at X50 Z2; three face cuts frm X50 down to X40 at Z-3.5, Z-7 and Z-10.)
+(G90 modal runs: end X, end Z and I kept within a run; G76 between its blocks does not end it; after G94 or G01 a new run starts with I = 0 and the pass index at 1)
 G0 X50 Z2;
-G94 X40. Z-3.5 F0.3;
-Z-7.;
-Z-10.;
+G90 X46 Z-30 I-1 F0.25; (run 1, pass1)
+X44; (pass 2: Z-30 and I-1 kept)
+G76 P010060 Q0.1 R0.05; (G76 is one-shot: the run goes on)
+G76 X46 Z-20 P1 Q0.4 F1.5; (a thread from the same start; F1.5 becomes the modal feed)
+X42 F0.25; (pass 3 of run 1)
+G94 X40 Z-1; (a face cut: G94 ends the G90 run)
+G90 X40 Z-30; (run 2,1 pass 1: I = 0)
+G01 X52 Z2; (G01 ends run 2)
+G90 X38 Z-30; (run 3, pass 1)
 M30;

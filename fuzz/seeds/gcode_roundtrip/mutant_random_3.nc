@@ -1,6 +1,6 @@
-(G78 constant depth ode D0: every cut is Q, the last clamped to k 1- d)
-G00 X40 Z5;
-G78 P010260 Q0.08 R0.05 D0;
-G78 X27.4 Z-20 P1.3 Q
-.4 F2 J1 K1;
-M40;
+(G7 inch tread, 16 threads per inch; run with --uni®ts inch)
+G20;
+G0 X1.2 Z0.2;
+G76 P011060 Q0.002 R0.001;
+G76 X0.9 Z-1 P0.04 Q0.012 I16;
+M30;

@@ -1,9 +1,6 @@
-(G90.EXAMPLE, M003 textbook notes: single OD cutting cycle, straight and taper; the seed prints G90X40.Z40.F0.3; and G90X40.Z-40.I-5.F0.3;35.)
-(Read as docs/INTERPRETATION.md says: Z40. is Z-40., the minus sign lost in print; 35. is the mod1l block X35., the letter lost.)
-(The seed gives no start point: the program starts at X50 Z2, outside a 40 mm stock.)
-G0 X50 Z2;
-G90 X40. Z-40. F0.3; (straight: cut at X40 from Z2 to Z-40)
-G0 X50 Z2; (G00 ends the run, so the taper starts a new one)
-G90 X40. Z-40. I-5. F0.3; (taper: the cut starts at X30 and ends at X40 Z-40)
-X35.; (modal repeat, I-5 kept: the cut starts at X25)
-M30;
+(G75.COLUMN and G75.RELIEF: grooves from Z-10 toward -Z stepped by 3, the last exactly at Z-20; a relief of)
+(0.3 in +Z against the step at the bottom of every groove but the first; e = 0.5, pecks of 2 mm.)
+G00 X52 Z-10
+G75 R0 .5
+G75 X40 Z-20 P Q3 R0.3 F0.05
+G00 X80 Z50
