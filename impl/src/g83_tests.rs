@@ -95,7 +95,7 @@ fn g84_seed_line_g98() {
             Event::Move(Move::rapid(0, 0, r)),
         ]
     );
-    // The seed's one-block form: G80 in the G84 block does not disarm this block's M29.
+    // The seed's one-block form: G80 in the G84 block does not disarm this block's M29 (`Rule::G80`).
     assert_eq!(events("G50 X60 Z40\nG00 X0 Z0\nG98M29S60G84Z-21R2F60G80\n", 1), e);
     // F / S rounded once, half up, on the lead grid: 100 / 3 mm per min → 33.3333 mm.
     let t = expand("G98 M29 S3 G84 Z-10 F100\n", Config::default());

@@ -54,7 +54,8 @@ mod emit;
 mod finish;
 pub mod fixed;
 mod g73;
-mod g74;
+/// G74/G75 peck cycles (public for the proof harness `peck_counts`).
+pub mod g74;
 mod g83;
 mod g84;
 pub mod g162;

@@ -386,7 +386,7 @@ impl Machine {
                 // M003 / M001 / M002 codes are not defined for the M004 controller, and G162 only
                 // for it (PRJ.DIALECT).
                 92 | 76 | 32 | 33 | 34 | 90 | 94 | 50 | 70 | 71 | 72 | 73 | 74 | 75 | 83 | 84 if !nc201 => {}
-                // G80 (no motion): ends an armed M29.
+                // G80 (`Rule::G80`, no motion): ends an armed M29.
                 80 if !nc201 => {
                     g80 = true;
                     continue;

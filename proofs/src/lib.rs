@@ -23,6 +23,7 @@ pub mod g92_pullout;
 pub mod g162_split;
 pub mod g162_pitch;
 pub mod g90_envelope;
+pub mod peck_counts;
 pub mod g92_pullout_geometry;
 #[cfg(not(kani))]
 pub mod schedule_spec;

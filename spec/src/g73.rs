@@ -37,9 +37,10 @@ struct Kept {
 const SIGNED: Read = Read::Length { lo: -N, hi: N };
 
 /// G73.COUNT (OPEN): "d … an integer (a decimal point is `NOT INTEGER`), d ≥ 1 (else `OUT OF
-/// RANGE`, rule G73.COUNT)"; its bound is the pass bound of the cycle (PRJ.MAXPASS). The lexer
-/// reads at most 18 digits, so every written integer fits below `i64::MAX`.
-const COUNT: Read = Read::Integer { lo: 1, hi: i64::MAX, rule: Rule::G73Count };
+/// RANGE`, rule G73.COUNT)", and at most N like every word's value (the register's
+/// clarification: beyond N is `OUT OF RANGE`, G73.COUNT, at the block that writes it); the pass
+/// bound of the cycle (PRJ.MAXPASS) comes later, with the cycle.
+const COUNT: Read = Read::Integer { lo: 1, hi: crate::words::N, rule: Rule::G73Count };
 
 /// G73.FORMAT: format (a)'s first block, "words U (Δi), W (Δk), R (d) only".
 const FIRST: Words = Words::of(&[(b'R', COUNT), (b'U', SIGNED), (b'W', SIGNED)]);

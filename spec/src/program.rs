@@ -237,7 +237,7 @@ impl<'c> Machine<'c> {
         }
     }
 
-    /// G84.FORMAT, G80, G50.SMAX (M003): what rigid tapping reads from the blocks before it —
+    /// G84.FORMAT, G80 (`Rule::G80`), G50.SMAX (M003): what rigid tapping reads from the blocks before it —
     /// G98 / G99 written set the feed mode ("the project keeps which one is in force (G99 at
     /// the start) only for G84's lead"); G80 "ends an M29 not followed by G84"; M29 "arms rigid
     /// tapping" (an M29 written with G80 arms: the G80 ends only an earlier one); "S is the last

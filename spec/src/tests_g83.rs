@@ -118,7 +118,7 @@ fn seed_g84_line_g98() {
     ];
     assert_eq!(events(&t, 1), expect);
     assert!(t.events.iter().skip(1).take(7).all(|e| e.rule() == Rule::G84Path));
-    // The seed's line as one block: the G80 written with M29 ends only an earlier M29.
+    // The seed's line as one block: the G80 written with M29 ends only an earlier M29 (`Rule::G80`).
     let one = run("G50 X60 Z40\nG00 X0 Z0\nG98M29S60G84Z-21R2F60G80\n");
     assert_eq!(one.events, t.events[..8]);
     // Rounded once, half away from zero: F0.0003 / S2 = 1.5 lead counts → 2.

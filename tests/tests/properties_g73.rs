@@ -26,6 +26,9 @@ struct El {
     centre: (i64, i64),
 }
 
+/// A move as compared: kind, x, z, feed, cx, cz.
+type Shape = (MoveKind, i64, i64, i64, i64, i64);
+
 #[derive(Debug, Clone)]
 struct G73 {
     a: (i64, i64),
@@ -78,7 +81,7 @@ impl G73 {
 
     /// The expected (kind, x, z, feed, cx, cz) of every move after the first pass header, and
     /// each pass's depth.
-    fn expected(&self) -> (Vec<i64>, Vec<(MoveKind, i64, i64, i64, i64, i64)>) {
+    fn expected(&self) -> (Vec<i64>, Vec<Shape>) {
         let (mut depths, mut moves) = (Vec::new(), Vec::new());
         let mut at = self.a;
         let mut go = |at: &mut (i64, i64), kind, to: (i64, i64), c: (i64, i64)| {

@@ -137,7 +137,7 @@ pub struct ConfigArgs {
 /// A candidate and its limits (docs/CANDIDATE.md).
 #[derive(Args, Debug)]
 pub struct CandidateArgs {
-    /// An external expander speaking cyclecheck-candidate/1 (and /2 for arcs and G70–G72), instead of the production expander; split like a shell command line (quotes, backslashes) and run without a shell.
+    /// An external expander speaking cyclecheck-candidate/1 (/2 for arcs and G70–G72, /3 for G73–G75, G83, G84), instead of the production expander; split like a shell command line (quotes, backslashes) and run without a shell.
     #[arg(long, value_name = "CMD")]
     pub candidate: Option<String>,
     /// Time allowed per case.
