@@ -159,6 +159,17 @@ fn identity(run: &Run, out: &mut String) {
         escape(&id.host.kernel),
         escape(&id.host.arch),
     );
+    if let Some(s) = run.options.shard {
+        let _ = write!(out, "<tr><th>shard</th><td>{s} of the run: <code>cyclecheck merge</code> joins the shards into the run's bundle</td></tr>");
+    }
+    if !run.merged_from.is_empty() {
+        let shards: Vec<String> = run
+            .merged_from
+            .iter()
+            .map(|s| format!("{} on {} ({}, {:.1} s, {} cases)", s.shard, escape(&s.host), escape(&s.started_utc), s.duration_s, s.cases))
+            .collect();
+        let _ = write!(out, "<tr><th>merged from {} shards</th><td>{}</td></tr>", shards.len(), shards.join("<br>"));
+    }
     if let Some(c) = &id.candidate {
         let hashed = |h: &super::identity::Hashed| match (&h.sha256, &h.error) {
             (Some(sha), _) => format!("<code>{}</code> SHA-256 <code>{sha}</code>", escape(&h.path)),
@@ -303,6 +314,7 @@ fn divergences(run: &Run, out: &mut String) {
 fn proofs(run: &Run, out: &mut String) {
     let p = &run.proofs;
     let z3 = match &p.z3_version {
+        None if p.left_to_merge => "this bundle is a shard: cyclecheck merge runs the z3 lemmas".to_string(),
         Some(v) => format!("z3 ran here ({}): {} of {} lemmas unsat", escape(v), p.lemmas.iter().filter(|l| l.proved()).count(), p.lemmas.len()),
         None => "z3 is not on this machine's PATH: the lemmas were not run".to_string(),
     };

@@ -397,7 +397,10 @@ pub fn run_engine(
         families: cases.runs,
         groups,
         stopped,
-        proofs: proofs::Proofs::check(options.kani_log.clone()),
+        proofs: match options.shard {
+            Some(_) => proofs::Proofs::left_to_merge(options.kani_log.clone()),
+            None => proofs::Proofs::check(options.kani_log.clone()),
+        },
         duration: started.elapsed(),
         merged_from: Vec::new(),
     })

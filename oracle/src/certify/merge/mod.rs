@@ -138,7 +138,7 @@ pub fn merge(request: &Request) -> Result<Run, String> {
     };
     let mut identity = identity_of(first)?;
     let mut merged_from = Vec::new();
-    let (mut tally, mut families) = (tally::Tally::default(), read::families(&first["families"])?);
+    let (mut tally, mut configurations, mut families) = (tally::Tally::default(), tally::Tally::default(), read::families(&first["families"])?);
     families.iter_mut().for_each(|f| f.kept = 0);
     let (mut duration, mut starts, mut stopped) = (0.0f64, 0u64, None::<Stopped>);
     for b in &bundles {
@@ -148,7 +148,7 @@ pub fn merge(request: &Request) -> Result<Run, String> {
         let seconds = summary["duration_s"].as_f64().unwrap_or(0.0);
         duration = duration.max(seconds);
         starts += doc["candidate"]["process_starts"].as_u64().unwrap_or(0);
-        add_configurations(&mut tally, doc);
+        add_configurations(&mut configurations, doc);
         for (f, g) in families.iter_mut().zip(read::families(&doc["families"])?) {
             f.kept += g.kept;
         }
@@ -216,6 +216,9 @@ pub fn merge(request: &Request) -> Result<Run, String> {
     if let Some(st) = stopped.as_mut() {
         st.judged = tally.cases;
     }
+    // The records' configurations are not all known (see `read::record`): the shards' counts are.
+    (tally.dialect, tally.grid) = (configurations.dialect, configurations.grid);
+    (tally.with_parameters, tally.with_start) = (configurations.with_parameters, configurations.with_start);
     let run = Run {
         candidate: first["candidate"]["name"].as_str().unwrap_or("impl").to_string(),
         candidate_argv: serde_json::from_value(first["candidate"]["command"].clone()).unwrap_or(None),
