@@ -19,7 +19,7 @@ impl Engine for Planted {
         "planted"
     }
     fn expand(&self, program: &[u8], config: &Config) -> Trace {
-        assert!(program.len() % 11 != 0, "planted panic");
+        assert!(!program.len().is_multiple_of(11), "planted panic");
         let mut t = cycle_spec::expand(program, config);
         for (i, e) in t.events.iter_mut().enumerate() {
             if let Event::Move(m) = e {
