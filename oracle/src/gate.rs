@@ -16,10 +16,15 @@
 //!    `CYCLECHECK_PROOF_CASES` — snapshots, properties, differential campaigns, the bounded
 //!    proofs' exhaustive and random drivers, the fuzz replay. Skipped with `--no-cargo-test`.
 //!
+//! With `--shard K/N` steps 1–3 take case i of their corpus, campaign and committed cases when
+//! i mod N = K - 1 ([`crate::certify::shard`]); step 4 runs on shard 1 only. The N shards
+//! together gate what one unsharded gate gates.
+//!
 //! Steps 1–3 run in this process, so a `cyclecheck` built with a feature of the impl (the
 //! planted bug, `planted-depth-bug`) gates that impl; step 4 passes the same feature on.
 
 use crate::campaign::{self, Verdict};
+use crate::certify::shard::Shard;
 use crate::engine::{ImplEngine, SpecEngine};
 use crate::fuzzing::{committed, decoded, replay, Target};
 use crate::{corpus, gen};
@@ -43,6 +48,8 @@ pub struct Options {
     pub proof_cases: u64,
     /// The repository root.
     pub root: PathBuf,
+    /// The slice of steps 1–3 to run (`--shard K/N`); step 4 runs on shard 1 only.
+    pub shard: Option<Shard>,
 }
 
 /// Cases of the in-process campaign by default.
@@ -63,6 +70,7 @@ impl Default for Options {
             test_cases: DEFAULT_TEST_CASES,
             proof_cases: DEFAULT_PROOF_CASES,
             root: PathBuf::from("."),
+            shard: None,
         }
     }
 }
@@ -96,30 +104,45 @@ fn findings_text(report: &campaign::Report) -> String {
     s
 }
 
+/// `, shard K/N` for a step's summary.
+fn shard_note(shard: Option<Shard>) -> String {
+    shard.map(|s| format!(", shard {s}")).unwrap_or_default()
+}
+
 /// Step 1.
-pub fn corpus_step() -> Step {
+pub fn corpus_step(shard: Option<Shard>) -> Step {
     step("corpus", || {
-        let r = campaign::run((&SpecEngine, &ImplEngine), corpus::cases());
-        let summary = format!("{} programs, {} conform; by cycle: {}", r.cases(), r.conforming(), crate::registry::counts_line(&r.by_cycle));
+        let cases = corpus::cases().enumerate().filter(|(i, _)| Shard::includes(shard, *i)).map(|(_, c)| c);
+        let r = campaign::run((&SpecEngine, &ImplEngine), cases);
+        let summary = format!(
+            "{} programs{}, {} conform; by cycle: {}",
+            r.cases(),
+            shard_note(shard),
+            r.conforming(),
+            crate::registry::counts_line(&r.by_cycle)
+        );
         (r.all_conform(), summary, findings_text(&r))
     })
 }
 
 /// Step 2: `cases` cases of `gen::any_case()` from a fixed seed.
-pub fn campaign_step(cases: u32, seed: u64) -> Step {
+pub fn campaign_step(cases: u32, seed: u64, shard: Option<Shard>) -> Step {
     step("campaign", || {
         let bytes = gen::seed_bytes(seed);
         let mut runner = TestRunner::new_with_rng(PtConfig::default(), TestRng::from_seed(RngAlgorithm::ChaCha, &bytes));
         let strategy = gen::any_case();
+        // Every case is drawn, so each shard's cases are the unsharded campaign's.
         let cases = (0..cases).filter_map(|i| {
-            let case = strategy.new_tree(&mut runner).ok()?.current();
+            let tree = strategy.new_tree(&mut runner).ok()?;
+            let case = Shard::includes(shard, i as usize).then(|| tree.current())?;
             Some((format!("{}#{i}", case.family), case.program, case.config))
         });
         let r = campaign::run((&SpecEngine, &ImplEngine), cases);
         let panics = r.findings.iter().filter(|f| matches!(f.verdict, Verdict::Panic { .. })).count();
         let summary = format!(
-            "seed {seed:#x}: {} cases, {} conform, {} panics; by cycle: {}",
+            "seed {seed:#x}: {} cases{}, {} conform, {} panics; by cycle: {}",
             r.cases(),
+            shard_note(shard),
             r.conforming(),
             panics,
             crate::registry::counts_line(&r.by_cycle)
@@ -129,7 +152,7 @@ pub fn campaign_step(cases: u32, seed: u64) -> Step {
 }
 
 /// Step 3.
-pub fn replay_step(root: &Path) -> Step {
+pub fn replay_step(root: &Path, shard: Option<Shard>) -> Step {
     step("fuzz replay", || {
         let (mut n, mut harness_cases, mut failures) = (0, 0, Vec::new());
         for t in Target::ALL {
@@ -148,7 +171,10 @@ pub fn replay_step(root: &Path) -> Step {
                         continue;
                     }
                 };
-                for (name, program, case) in cases {
+                for (i, (name, program, case)) in cases.into_iter().enumerate() {
+                    if !Shard::includes(shard, i) {
+                        continue;
+                    }
                     n += 1;
                     let here = format!("{} {}/{name}", t.name(), dir.display());
                     match std::panic::catch_unwind(|| replay::replay(t, &program, &case)) {
@@ -160,7 +186,8 @@ pub fn replay_step(root: &Path) -> Step {
             }
         }
         let summary = format!(
-            "{n} committed program cases, {} fail; {harness_cases} impl_invariants cases (replayed by `cargo test`)",
+            "{n} committed program cases{}, {} fail; {harness_cases} impl_invariants cases (replayed by `cargo test`)",
+            shard_note(shard),
             failures.len()
         );
         (n > 0 && failures.is_empty(), summary, failures.into_iter().take(3).collect::<Vec<_>>().join("\n\n"))
@@ -235,8 +262,8 @@ fn failure_lines(output: &str) -> String {
 /// Runs the gate; the steps and the total wall time.
 pub fn run(o: &Options) -> (Vec<Step>, Duration) {
     let t = Instant::now();
-    let mut steps = vec![corpus_step(), campaign_step(o.cases, o.seed), replay_step(&o.root)];
-    if o.cargo_test {
+    let mut steps = vec![corpus_step(o.shard), campaign_step(o.cases, o.seed, o.shard), replay_step(&o.root, o.shard)];
+    if o.cargo_test && o.shard.is_none_or(|s| s.index == 1) {
         steps.push(cargo_test_step(o));
     }
     (steps, t.elapsed())
@@ -291,7 +318,7 @@ mod tests {
     #[test]
     fn in_process_steps_pass_on_this_impl() {
         let root = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
-        let steps = [corpus_step(), campaign_step(200, 1), replay_step(root)];
+        let steps = [corpus_step(None), campaign_step(200, 1, None), replay_step(root, None)];
         for s in &steps {
             assert!(s.passed, "{}: {}\n{}", s.name, s.summary, s.details);
         }
@@ -300,9 +327,32 @@ mod tests {
     }
 
     #[test]
+    fn shards_of_the_in_process_steps_add_up_to_the_whole() {
+        let root = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
+        // The number before `programs`, `cases` or `committed` in a step's summary.
+        let count = |s: &Step| -> usize {
+            let words: Vec<&str> = s.summary.split_whitespace().collect();
+            let at = words.windows(2).position(|w| ["programs", "programs,", "cases", "cases,", "committed"].contains(&w[1]));
+            at.and_then(|i| words[i].parse().ok()).unwrap_or_else(|| panic!("no count in {}", s.summary))
+        };
+        let whole = [corpus_step(None), campaign_step(60, 1, None), replay_step(root, None)];
+        let shards: Vec<[Step; 3]> = (1..=3)
+            .map(|k| {
+                let s = Some(Shard { index: k, count: 3 });
+                [corpus_step(s), campaign_step(60, 1, s), replay_step(root, s)]
+            })
+            .collect();
+        for (i, w) in whole.iter().enumerate() {
+            assert!(w.passed, "{}", w.summary);
+            assert!(shards.iter().all(|s| s[i].passed && s[i].summary.contains(", shard ")), "{}", shards[0][i].summary);
+            assert_eq!(shards.iter().map(|s| count(&s[i])).sum::<usize>(), count(w), "{}", w.summary);
+        }
+    }
+
+    #[test]
     fn a_failed_step_fails_the_gate_and_shows_its_details() {
         let bad = Step { name: "x", passed: false, summary: "1 case".into(), details: "DIVERGE here".into(), time: Duration::ZERO };
-        let text = report(&[corpus_step(), bad], Duration::ZERO);
+        let text = report(&[corpus_step(None), bad], Duration::ZERO);
         assert!(text.contains("FAIL x") && text.contains("--- x ---\nDIVERGE here") && text.contains("gate FAILED"), "{text}");
     }
 }

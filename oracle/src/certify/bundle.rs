@@ -14,7 +14,7 @@ use super::evidence;
 use super::html;
 use super::matrix;
 use super::plot;
-use super::{CaseResult, Run};
+use super::{CaseRecord, CaseResult, Run};
 use crate::reaper;
 use std::fs::{self, File};
 use std::io::{self, Write};
@@ -22,16 +22,23 @@ use std::path::{Path, PathBuf};
 
 /// The bundle's files but `cases.jsonl` (written during the run): relative path → contents.
 pub fn files(run: &Run) -> Vec<(String, Vec<u8>)> {
-    let rows = matrix::rows(Some(run));
-    let mut plots = Vec::new();
-    let mut files = Vec::new();
-    for r in &run.corpus {
-        let (Some((reference, candidate)), super::Origin::Corpus { path }) = (&r.traces, &r.origin) else { continue };
+    files_with_plots(run, &mut |r| {
+        let (reference, candidate) = r.traces.as_ref()?;
         let (cand, div) = match &r.result {
             CaseResult::Diverge(d) => (candidate.as_ref(), Some((d.index, d.rule))),
             _ => (None, None),
         };
-        let svg = plot::svg(&r.name, &r.config, reference, cand, div);
+        Some(plot::svg(&r.name, &r.config, reference, cand, div))
+    })
+}
+
+/// [`files`], each corpus program's plot given by `svg_of` (a merge copies the shards' plots).
+pub fn files_with_plots(run: &Run, svg_of: &mut dyn FnMut(&CaseRecord) -> Option<String>) -> Vec<(String, Vec<u8>)> {
+    let rows = matrix::rows(Some(run));
+    let mut plots = Vec::new();
+    let mut files = Vec::new();
+    for r in &run.corpus {
+        let (Some(svg), super::Origin::Corpus { path }) = (svg_of(r), &r.origin) else { continue };
         files.push((format!("plots/{}.svg", r.name), svg.clone().into_bytes()));
         plots.push(html::PlotEntry { name: r.name.clone(), path: path.to_string(), result: html::result_line(r), svg });
     }

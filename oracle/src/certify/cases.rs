@@ -1,8 +1,9 @@
 //! The cases of a certification run, drawn one at a time: the corpus programs of the covered
 //! cycles, then the generated cases — one generator per covered registry family, and garbage
 //! when every family is covered. Nothing is drawn ahead, so the run's memory does not grow with
-//! the number of cases.
+//! the number of cases. A sharded run ([`super::shard`]) draws every case and keeps its own.
 
+use super::shard::Shard;
 use super::{Options, Origin};
 use crate::corpus;
 use crate::engine::SpecEngine;
@@ -29,7 +30,8 @@ pub struct FamilyRun {
     /// A registry family's name, or `garbage`.
     pub family: &'static str,
     pub seed: u64,
-    /// Cases drawn from the generator, and those kept (their cycle is in the run).
+    /// Cases drawn from the generator, and those kept (their cycle is in the run, and with
+    /// `--shard`, their number in the shard).
     pub drawn: u32,
     pub kept: u32,
 }
@@ -74,7 +76,7 @@ fn covered(options: &Options, program: &[u8], config: &Config) -> bool {
 /// The cases of a run, in order, drawn as they are asked for.
 pub struct Cases<'o> {
     options: &'o Options,
-    corpus: std::slice::Iter<'static, corpus::Program>,
+    corpus: std::iter::Enumerate<std::slice::Iter<'static, corpus::Program>>,
     generators: std::vec::IntoIter<Generator>,
     /// The generator being drawn from, its runner and the next index.
     current: Option<(Generator, TestRunner, u32)>,
@@ -89,14 +91,14 @@ impl<'o> Cases<'o> {
     pub fn new(options: &'o Options) -> Cases<'o> {
         let generators = generators(options);
         let total = corpus::PROGRAMS.len() + generators.iter().map(|g| g.count as usize).sum::<usize>();
-        Cases { options, corpus: corpus::PROGRAMS.iter(), generators: generators.into_iter(), current: None, runs: Vec::new(), drawn: 0, total }
+        Cases { options, corpus: corpus::PROGRAMS.iter().enumerate(), generators: generators.into_iter(), current: None, runs: Vec::new(), drawn: 0, total }
     }
 
     fn next_corpus(&mut self) -> Option<Pending> {
-        for p in self.corpus.by_ref() {
+        for (i, p) in self.corpus.by_ref() {
             self.drawn += 1;
             let config = p.config();
-            if covered(self.options, p.text.as_bytes(), &config) {
+            if Shard::includes(self.options.shard, i) && covered(self.options, p.text.as_bytes(), &config) {
                 let (name, origin) = (p.name.to_string(), Origin::Corpus { path: p.path });
                 return Some(Pending { name, origin, program: p.text.as_bytes().to_vec(), config, tree: None });
             }
@@ -123,6 +125,9 @@ impl<'o> Cases<'o> {
             *index += 1;
             self.drawn += 1;
             let Ok(tree) = g.strategy.new_tree(runner) else { continue };
+            if !Shard::includes(self.options.shard, i as usize) {
+                continue;
+            }
             let case = tree.current();
             if !covered(self.options, &case.program, &case.config) {
                 continue;
@@ -182,6 +187,24 @@ mod tests {
         };
         let with_all = generated(&all);
         assert!(generated(&a).iter().all(|p| with_all.contains(p)));
+    }
+
+    #[test]
+    fn shards_split_the_cases_of_the_whole_run() {
+        let whole = Options { cycles: Options::parse_cycles("g92,g90").unwrap(), cases: 13, ..Options::default() };
+        let (all, runs) = drain(&whole);
+        let mut joined: Vec<(String, Vec<u8>)> = Vec::new();
+        for k in 1..=3 {
+            let shard = Some(Shard::parse(&format!("{k}/3")).unwrap());
+            let (part, part_runs) = drain(&Options { shard, ..whole.clone() });
+            assert!(!part.is_empty() && part.len() < all.len(), "shard {k}/3: {} of {}", part.len(), all.len());
+            assert!(part_runs.iter().zip(&runs).all(|(p, r)| p.drawn == r.drawn && p.seed == r.seed));
+            joined.extend(part.into_iter().map(|p| (p.name, p.program)));
+        }
+        let mut expected: Vec<(String, Vec<u8>)> = all.into_iter().map(|p| (p.name, p.program)).collect();
+        expected.sort();
+        joined.sort();
+        assert_eq!(joined, expected, "the shards hold the whole run's cases, each once");
     }
 
     #[test]

@@ -4,7 +4,8 @@
 //! compiled in, the candidate and its limits, parameters and seeds, counts per cycle run (each
 //! with what it counts), per rule and per configuration, the failures listed, the divergence
 //! groups with their minimized inputs, and the traceability matrix. Every case is in
-//! `cases.jsonl`, one JSON object per line, written during the run.
+//! `cases.jsonl`, one JSON object per line, written during the run. A shard's bundle names its
+//! shard (`parameters.shard`, `K/N`); a merged bundle lists its shards (`merged_from`).
 
 use super::matrix::{self, Row};
 use super::tally::program_text;
@@ -143,6 +144,7 @@ pub fn document(run: &Run, rows: &[Row]) -> Value {
             "cycles": run.options.cycles.iter().map(|f| f.name).collect::<Vec<_>>(),
             "cases_per_family": run.options.cases,
             "seed": run.options.seed,
+            "shard": run.options.shard.map(|s| s.to_string()),
             "shrink_steps": SHRINK_STEPS,
             "max_minimized_groups": MAX_MINIMIZED,
         },
@@ -171,6 +173,7 @@ pub fn document(run: &Run, rows: &[Row]) -> Value {
         "divergences": groups(run),
         "cases": { "file": "cases.jsonl", "count": run.cases() },
         "matrix": matrix_json(rows),
+        "merged_from": run.merged_from,
     })
 }
 

@@ -4,7 +4,7 @@
 //! the host (name, OS, kernel, architecture), and the candidate's command with its resolved
 //! executable and the SHA-256 of that file and of every other file its command line names.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use sha2::{Digest, Sha256};
 use std::path::{Path, PathBuf};
 
@@ -35,17 +35,17 @@ pub const BUILD: Build = Build {
 pub const LONG_VERSION: &str = env!("CYCLECHECK_LONG_VERSION");
 
 /// The machine a run ran on.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Host {
     pub name: String,
     /// `linux`, with the distribution's name when it says it.
     pub os: String,
     pub kernel: String,
-    pub arch: &'static str,
+    pub arch: String,
 }
 
 /// A file and its SHA-256 (lowercase hex), or why it could not be read.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Hashed {
     pub path: String,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -55,7 +55,7 @@ pub struct Hashed {
 }
 
 /// The candidate as run.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Candidate {
     pub command: Vec<String>,
     /// The executable the command's first word resolves to (through `PATH` when it has no
@@ -108,7 +108,7 @@ fn host() -> Host {
         None => std::env::consts::OS.to_string(),
     };
     let kernel = first_line("/proc/sys/kernel/osrelease").unwrap_or_else(|| "unknown".to_string());
-    Host { name, os, kernel, arch: std::env::consts::ARCH }
+    Host { name, os, kernel, arch: std::env::consts::ARCH.to_string() }
 }
 
 /// The SHA-256 of a file's bytes, lowercase hex.

@@ -46,8 +46,9 @@ pub struct Group {
     pending: Option<Pending>,
 }
 
-/// Adds a judged case to the groups: its group's index when it diverges.
-pub(super) fn add(groups: &mut Vec<Group>, record: &CaseRecord, pending: Pending) -> Option<usize> {
+/// Adds a judged case to the groups: its group's index when it diverges. `pending` (the case
+/// as drawn) is kept for minimization when the case opens one of the first groups.
+pub(super) fn add(groups: &mut Vec<Group>, record: &CaseRecord, pending: Option<Pending>) -> Option<usize> {
     let CaseResult::Diverge(d) = &record.result else { return None };
     let sig = signature(d);
     if let Some(g) = groups.iter().position(|g| g.signature == sig) {
@@ -59,7 +60,7 @@ pub(super) fn add(groups: &mut Vec<Group>, record: &CaseRecord, pending: Pending
         return Some(g);
     }
     let first = CaseRecord { traces: None, ..record.clone() };
-    let pending = (groups.len() < MAX_MINIMIZED).then_some(pending);
+    let pending = pending.filter(|_| groups.len() < MAX_MINIMIZED);
     groups.push(Group { signature: sig, count: 1, names: vec![record.name.clone()], first, minimized: None, pending });
     Some(groups.len() - 1)
 }

@@ -19,6 +19,9 @@
 //! ([`identity`]), `cases.jsonl`, `index.html` ([`html`]) with the traceability matrix
 //! ([`matrix`]) and the interpretation register, and one SVG toolpath per corpus program
 //! ([`plot`]).
+//!
+//! A run can be one shard of N ([`shard`]: `--shard K/N`); `cyclecheck merge` ([`merge`])
+//! joins the shards' bundles into the bundle of the whole run.
 
 pub mod bundle;
 pub mod cases;
@@ -28,9 +31,11 @@ pub mod identity;
 pub mod kani;
 pub mod markdown;
 pub mod matrix;
+pub mod merge;
 pub mod minimize;
 pub mod plot;
 pub mod proofs;
+pub mod shard;
 pub mod tally;
 
 pub use crate::judge::CaseResult;
@@ -79,6 +84,8 @@ pub struct Options {
     pub max_failures: u32,
     /// A vendor's `cargo kani` log (`--kani-log`), parsed: the proofs section lists its verdicts.
     pub kani_log: Option<kani::KaniLog>,
+    /// The slice of the run to judge (`--shard K/N`); `None`: every case.
+    pub shard: Option<shard::Shard>,
 }
 
 impl Default for Options {
@@ -91,6 +98,7 @@ impl Default for Options {
             seed: DEFAULT_SEED,
             max_failures: DEFAULT_MAX_FAILURES,
             kani_log: None,
+            shard: None,
         }
     }
 }
@@ -196,6 +204,8 @@ pub struct Run {
     /// How each proof property was checked: the z3 lemmas run now, the imported Kani log.
     pub proofs: proofs::Proofs,
     pub duration: Duration,
+    /// The shards a merged bundle was joined from (empty for a run).
+    pub merged_from: Vec<shard::ShardRun>,
 }
 
 impl Run {
@@ -320,16 +330,30 @@ impl std::fmt::Display for Error {
 /// Runs the certification: every case, each written to `cases_out` as a line of
 /// `cases.jsonl` when judged, then the minimization of each divergence group.
 pub fn run(options: &Options, cases_out: &mut dyn Write, progress: &mut dyn FnMut(Progress)) -> Result<Run, Error> {
-    let started = Instant::now();
     let candidate = match &options.candidate {
         None => None,
         Some(cmd) => Some(CandidateEngine::new(cmd, options.limits).map_err(|e| Error(format!("--candidate: {e}")))?),
     };
-    let identity = identity::Identity::capture(candidate.as_ref().map(CandidateEngine::argv));
+    let argv = candidate.as_ref().map(|c| c.argv().to_vec());
     let engine: &dyn Engine = match &candidate {
         Some(c) => c,
         None => &ImplEngine,
     };
+    let mut run = run_engine(options, engine, argv, cases_out, progress)?;
+    run.candidate_starts = candidate.as_ref().map_or(0, CandidateEngine::starts);
+    Ok(run)
+}
+
+/// [`run`] against `engine`, whose command line is `argv` when it is an external candidate.
+pub fn run_engine(
+    options: &Options,
+    engine: &dyn Engine,
+    argv: Option<Vec<String>>,
+    cases_out: &mut dyn Write,
+    progress: &mut dyn FnMut(Progress),
+) -> Result<Run, Error> {
+    let started = Instant::now();
+    let identity = identity::Identity::capture(argv.as_deref());
     let mut cases = cases::Cases::new(options);
     let (mut tally, mut corpus, mut failures, mut groups) = (tally::Tally::default(), Vec::new(), Vec::new(), Vec::new());
     let (mut consecutive, mut stopped) = (0u32, None);
@@ -343,7 +367,7 @@ pub fn run(options: &Options, cases_out: &mut dyn Write, progress: &mut dyn FnMu
         let judged = if in_corpus { judge_keeping(&SpecEngine, engine, &p.program, &p.config) } else { judge(&SpecEngine, engine, &p.program, &p.config) };
         let record = CaseRecord::new(&p, judged);
         tally.add(&record);
-        let group = minimize::add(&mut groups, &record, p);
+        let group = minimize::add(&mut groups, &record, Some(p));
         writeln!(cases_out, "{}", tally::case_line(&record, group)).map_err(write_error)?;
         consecutive = if record.candidate_failed() { consecutive + 1 } else { 0 };
         if matches!(record.result, CaseResult::Failure { .. }) && failures.len() < MAX_LISTED_FAILURES {
@@ -364,8 +388,8 @@ pub fn run(options: &Options, cases_out: &mut dyn Write, progress: &mut dyn FnMu
     Ok(Run {
         options: options.clone(),
         candidate: engine.name().to_string(),
-        candidate_argv: candidate.as_ref().map(|c| c.argv().to_vec()),
-        candidate_starts: candidate.as_ref().map_or(0, CandidateEngine::starts),
+        candidate_argv: argv,
+        candidate_starts: 0,
         identity,
         tally,
         corpus,
@@ -373,8 +397,12 @@ pub fn run(options: &Options, cases_out: &mut dyn Write, progress: &mut dyn FnMu
         families: cases.runs,
         groups,
         stopped,
-        proofs: proofs::Proofs::check(options.kani_log.clone()),
+        proofs: match options.shard {
+            Some(_) => proofs::Proofs::left_to_merge(options.kani_log.clone()),
+            None => proofs::Proofs::check(options.kani_log.clone()),
+        },
         duration: started.elapsed(),
+        merged_from: Vec::new(),
     })
 }
 

@@ -3,7 +3,7 @@
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use cycle_oracle::candidate::Limits;
-use cycle_oracle::certify::{self, identity::LONG_VERSION};
+use cycle_oracle::certify::{self, identity::LONG_VERSION, shard::Shard};
 use cycle_oracle::{gate, nightly, registry};
 use cycle_vocab::{Config, Dialect, Increment, Units};
 use std::path::PathBuf;
@@ -30,6 +30,8 @@ pub enum Command {
     Corpus(CorpusArgs),
     /// Write the certification evidence bundle: the corpus and a generated campaign, spec vs the candidate.
     Certify(CertifyArgs),
+    /// Join the bundles of certify --shard 1/N … N/N into the bundle of the whole run.
+    Merge(MergeArgs),
     /// The pre-merge gate: corpus, campaign, fuzz replay, cargo test (run from the repository root).
     Gate(GateArgs),
     /// The nightly fuzz campaign with cargo-fuzz; or write the seeds; or decode a fuzz input (run from the repository root).
@@ -227,6 +229,26 @@ pub struct CertifyArgs {
     /// Kani and CBMC versions per harness); without it Kani is "not run here".
     #[arg(long, value_name = "FILE")]
     pub kani_log: Option<PathBuf>,
+    /// Judge only shard K of N: case i of the corpus and of each family goes to shard i mod N + 1 (merge the shards' bundles with cyclecheck merge).
+    #[arg(long, value_name = "K/N", value_parser = shard)]
+    pub shard: Option<Shard>,
+}
+
+fn shard(text: &str) -> Result<Shard, String> {
+    Shard::parse(text)
+}
+
+#[derive(Args, Debug)]
+pub struct MergeArgs {
+    /// Where the merged bundle goes: a new directory, an empty one, or a previous bundle (replaced).
+    #[arg(long, value_name = "DIR")]
+    pub out: PathBuf,
+    /// A `cargo kani -p cycle-proofs` log to list with the proof properties, as certify --kani-log.
+    #[arg(long, value_name = "FILE")]
+    pub kani_log: Option<PathBuf>,
+    /// The shards' bundles: every shard 1/N … N/N of one certify run, each once.
+    #[arg(value_name = "BUNDLE", required = true)]
+    pub bundles: Vec<PathBuf>,
 }
 
 #[derive(Args, Debug)]
@@ -246,6 +268,9 @@ pub struct GateArgs {
     /// CYCLECHECK_PROOF_CASES of the cargo test step.
     #[arg(long, value_name = "N", default_value_t = gate::DEFAULT_PROOF_CASES)]
     pub proof_cases: u64,
+    /// Run only shard K of N of the corpus, campaign and fuzz replay steps (case i to shard i mod N + 1); the cargo test step runs on shard 1 only.
+    #[arg(long, value_name = "K/N", value_parser = shard)]
+    pub shard: Option<Shard>,
 }
 
 /// The targets of `--targets`.

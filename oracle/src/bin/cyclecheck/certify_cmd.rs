@@ -3,24 +3,25 @@
 //! of the bundle and renames it into place; prints the summary. Exit 0 when every case conforms,
 //! 1 otherwise, 2 on bad options, an unusable `--out` or a failed write.
 
-use crate::args::CertifyArgs;
+use crate::args::{CertifyArgs, MergeArgs};
 use crate::{bad, Bad};
 use cycle_oracle::candidate::split_command;
 use cycle_oracle::certify::{self, bundle::Staging};
 use std::io::BufWriter;
 
+/// The `--kani-log` file, parsed; a file that is no cargo-kani log is refused.
+fn kani_log(file: Option<&std::path::Path>) -> Result<Option<certify::kani::KaniLog>, Bad> {
+    let Some(f) = file else { return Ok(None) };
+    let text = std::fs::read_to_string(f).map_err(|e| Bad(format!("--kani-log {}: {e}", f.display())))?;
+    let log = certify::kani::parse_log(&text);
+    if log.harnesses.is_empty() {
+        return bad(format!("--kani-log {}: no \"Checking harness\" line: not a cargo-kani log", f.display()));
+    }
+    Ok(Some(log))
+}
+
 pub fn run(a: &CertifyArgs) -> Result<u8, Bad> {
-    let kani_log = match &a.kani_log {
-        None => None,
-        Some(f) => {
-            let text = std::fs::read_to_string(f).map_err(|e| Bad(format!("--kani-log {}: {e}", f.display())))?;
-            let log = certify::kani::parse_log(&text);
-            if log.harnesses.is_empty() {
-                return bad(format!("--kani-log {}: no \"Checking harness\" line: not a cargo-kani log", f.display()));
-            }
-            Some(log)
-        }
-    };
+    let kani_log = kani_log(a.kani_log.as_deref())?;
     let options = certify::Options {
         candidate: a.candidate.candidate.clone(),
         limits: a.candidate.limits(),
@@ -29,6 +30,7 @@ pub fn run(a: &CertifyArgs) -> Result<u8, Bad> {
         seed: a.seed,
         max_failures: a.max_failures,
         kani_log,
+        shard: a.shard,
     };
     if let Some(cmd) = &options.candidate {
         split_command(cmd).map_err(|e| Bad(format!("--candidate {cmd:?}: {e}")))?;
@@ -46,14 +48,32 @@ pub fn run(a: &CertifyArgs) -> Result<u8, Bad> {
     if let Err(e) = written {
         return bad(format!("cannot write {}: {e}", out.display()));
     }
-    let plots = files.iter().filter(|(f, _)| f.starts_with("plots/")).count();
+    Ok(report(&run, files.iter().filter(|(f, _)| f.starts_with("plots/")).count(), out))
+}
+
+/// Prints the summary and what was written; the exit code.
+fn report(run: &certify::Run, plots: usize, out: &std::path::Path) -> u8 {
     let verdict = if run.passed() { "PASS" } else { "FAIL" };
+    let shard = match (run.options.shard, run.merged_from.len()) {
+        (Some(s), _) => format!(" (shard {s}: merge the shards with cyclecheck merge)"),
+        (None, 0) => String::new(),
+        (None, n) => format!(" (merged from {n} shards)"),
+    };
     crate::expand::emit(&format!(
-        "{}\nwrote {}: index.html, evidence.json, cases.jsonl, {plots} plots — {verdict}\n",
+        "{}\nwrote {}: index.html, evidence.json, cases.jsonl, {plots} plots — {verdict}{shard}\n",
         run.summary(),
         out.display()
     ));
-    Ok(if run.passed() { 0 } else { 1 })
+    if run.passed() { 0 } else { 1 }
+}
+
+/// `merge`: joins shard bundles (`certify::merge`); exit 0 when every case conforms, 1
+/// otherwise, 2 when the bundles cannot be merged.
+pub fn merge(a: &MergeArgs) -> Result<u8, Bad> {
+    let request = certify::merge::Request { bundles: a.bundles.clone(), out: a.out.clone(), kani_log: kani_log(a.kani_log.as_deref())? };
+    let run = certify::merge::merge(&request).map_err(Bad)?;
+    let plots = std::fs::read_dir(a.out.join("plots")).map_or(0, |d| d.count());
+    Ok(report(&run, plots, &a.out))
 }
 
 /// A progress bar on stderr: redrawn in place on a terminal, a line per phase otherwise.

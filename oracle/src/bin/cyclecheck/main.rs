@@ -43,6 +43,7 @@ fn main() -> ExitCode {
         Command::Diff(a) => expand::diff(&a),
         Command::Corpus(a) => corpus_cmd::run(&a),
         Command::Certify(a) => certify_cmd::run(&a),
+        Command::Merge(a) => certify_cmd::merge(&a),
         Command::Gate(a) => {
             let o = gate::Options {
                 cases: a.cases,
@@ -50,6 +51,7 @@ fn main() -> ExitCode {
                 cargo_test: !a.no_cargo_test,
                 test_cases: a.test_cases,
                 proof_cases: a.proof_cases,
+                shard: a.shard,
                 ..gate::Options::default()
             };
             gate::command(&o).map_err(Bad)
