@@ -127,3 +127,5 @@ mod tests_lex;
 mod tests_m003_words;
 #[cfg(test)]
 mod tests_props;
+#[cfg(test)]
+mod tests_util;

@@ -1,6 +1,7 @@
 //! Every alarm of docs/INTERPRETATION.md's contour sections (CNT.*, G70, G71, G72) with its
 //! code, word, rule and line, the cycle check order, CNT.FLOW, and the layer ends on arcs.
 
+use crate::tests_util::*;
 use crate::contour::Contour;
 use crate::expand;
 use crate::stock_removal::layers::arc_crossing;
@@ -8,16 +9,8 @@ use crate::stock_removal::{Axes, Cycle};
 use cycle_vocab::{AlarmCode, Config, Event, Params, Rule};
 use AlarmCode::*;
 
-type Expect = (AlarmCode, Option<char>, Rule, u32);
 
-fn alarm_with(src: &str, config: &Config) -> Expect {
-    let a = expand(src.as_bytes(), config).alarm.unwrap_or_else(|| panic!("no alarm for {src:?}"));
-    (a.code, a.word.map(char::from), a.rule, a.line)
-}
 
-fn alarm_of(src: &str) -> Expect {
-    alarm_with(src, &Config::default())
-}
 
 /// A G71 program from A = X50 Z2 with `contour` as blocks N10, N20, … (one per line, from line 4).
 fn g71(contour: &[&str]) -> String {

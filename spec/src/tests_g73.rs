@@ -2,19 +2,12 @@
 //! out by hand from docs/INTERPRETATION.md, "G73 (pattern repeating)", not taken from the
 //! spec's output.
 
+use crate::tests_util::*;
 use crate::expand;
 use cycle_vocab::text::Trace;
-use cycle_vocab::{AlarmCode, Config, Dialect, Event, MoveKind, PassKind, Rule};
+use cycle_vocab::{AlarmCode, Config, Dialect, MoveKind, PassKind, Rule};
 
-fn run_with(src: &str, config: &Config) -> Trace {
-    let t = expand(src.as_bytes(), config);
-    assert_eq!(t.alarm, None, "{}", t.to_gcode());
-    t
-}
 
-fn run(src: &str) -> Trace {
-    run_with(src, &Config::default())
-}
 
 /// A move with its arc centre (0, 0 for lines).
 type M = (MoveKind, i64, i64, i64, i64);
@@ -23,20 +16,9 @@ fn moves(t: &Trace) -> Vec<M> {
     t.moves().map(|m| (m.kind, m.x, m.z, m.cx, m.cz)).collect()
 }
 
-fn passes(t: &Trace) -> Vec<(u32, PassKind, i64, Rule)> {
-    t.events.iter().filter_map(|e| if let Event::Pass(p) = e { Some((p.index, p.kind, p.diameter_depth, p.rule)) } else { None }).collect()
-}
 
-type Expect = (AlarmCode, Option<char>, Rule, u32);
 
-fn alarm_with(src: &str, config: &Config) -> Expect {
-    let a = expand(src.as_bytes(), config).alarm.unwrap_or_else(|| panic!("no alarm for {src:?}"));
-    (a.code, a.word.map(char::from), a.rule, a.line)
-}
 
-fn alarm_of(src: &str) -> Expect {
-    alarm_with(src, &Config::default())
-}
 
 use MoveKind::{ArcCcw, ArcCw, Feed, Rapid};
 

@@ -2,15 +2,11 @@
 //! is worked out by hand from docs/INTERPRETATION.md, "G83 and G84", not taken from the spec's
 //! output.
 
+use crate::tests_util::*;
 use crate::expand;
 use cycle_vocab::text::Trace;
 use cycle_vocab::{AlarmCode, Config, Dialect, Event, MoveKind, PassKind, Rule, SpindleState};
 
-fn run(src: &str) -> Trace {
-    let t = expand(src.as_bytes(), &Config::default());
-    assert_eq!(t.alarm, None, "{}", t.to_gcode());
-    t
-}
 
 /// Every event, compactly: moves as (kind, z, feed), dwells as ms, spindle states, passes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -38,16 +34,8 @@ fn events(t: &Trace, skip: usize) -> Vec<E> {
         .collect()
 }
 
-type Expect = (AlarmCode, Option<char>, Rule, u32);
 
-fn alarm_with(src: &str, config: &Config) -> Expect {
-    let a = expand(src.as_bytes(), config).alarm.unwrap_or_else(|| panic!("no alarm for {src:?}"));
-    (a.code, a.word.map(char::from), a.rule, a.line)
-}
 
-fn alarm_of(src: &str) -> Expect {
-    alarm_with(src, &Config::default())
-}
 
 use MoveKind::{Feed, Rapid, Thread};
 

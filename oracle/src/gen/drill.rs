@@ -7,10 +7,10 @@
 //! range, no M29 (or a G80 between M29 and G84), no S or S out of range, no feed, refused words
 //! (X, U, C, K, I), the pass bound, `nc201`.
 
-use super::writer::{tail, Writer};
-use super::{config, unit, Case, Dice, LEAD_UNIT};
+use super::writer::tail;
+use super::{unit, Case, Dice, LEAD_UNIT};
 use cycle_vocab::text::fixed;
-use cycle_vocab::{Config, Dialect};
+use cycle_vocab::Config;
 
 /// A G83 program.
 pub fn g83(dice: &mut Dice) -> Case {
@@ -24,15 +24,10 @@ pub fn g84(dice: &mut Dice) -> Case {
 
 /// A drilling (`tap`: tapping) program.
 fn build(dice: &mut Dice, tap: bool) -> Case {
-    let fanuc = dice.fork(1).chance(30);
-    let mut config = config(&mut dice.fork(48), fanuc);
-    if dice.fork(1).chance(3) {
-        config.dialect = Dialect::Nc201;
-    }
+    let (mut config, mut w) = super::cycle_start(dice);
     let grid = config.grid;
     let (dec, lead_dec) = (grid.decimals(), grid.lead_decimals());
     let u = unit(grid);
-    let mut w = Writer::new(&mut dice.fork(2));
     let d = &mut dice.fork(40);
 
     // The initial level: X on the axis mostly, Z above the face.

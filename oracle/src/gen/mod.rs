@@ -279,5 +279,17 @@ fn config(d: &mut Dice, fanuc: bool) -> Config {
     c
 }
 
+/// The start of a one-cycle program: the configuration (`fanuc` in 30 % of the cases, then
+/// `nc201` in 3 %) and the writer, each from its own window of knobs.
+fn cycle_start(dice: &mut Dice) -> (Config, writer::Writer) {
+    let fanuc = dice.fork(1).chance(30);
+    let mut config = config(&mut dice.fork(48), fanuc);
+    if dice.fork(1).chance(3) {
+        config.dialect = Dialect::Nc201;
+    }
+    let w = writer::Writer::new(&mut dice.fork(2));
+    (config, w)
+}
+
 #[cfg(test)]
 mod tests;

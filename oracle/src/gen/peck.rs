@@ -7,10 +7,10 @@
 //! alarms: no travel on the peck axis, a missing or zero peck or step, negative lengths, the
 //! pass bound (a small `max_passes`), a missing feed, refused words, X with U, `nc201`.
 
-use super::writer::{axis, tail, Writer};
-use super::{config, unit, Case, Dice, LEAD_UNIT, N};
+use super::writer::{axis, tail};
+use super::{unit, Case, Dice, LEAD_UNIT, N};
 use cycle_vocab::text::fixed;
-use cycle_vocab::{Config, Dialect};
+use cycle_vocab::Config;
 
 /// Which peck cycle.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -63,15 +63,10 @@ fn step(d: &mut Dice, travel: i64) -> i64 {
 
 /// A peck-cycle program of `peck`.
 fn build(dice: &mut Dice, peck: Peck) -> Case {
-    let fanuc = dice.fork(1).chance(30);
-    let mut config = config(&mut dice.fork(48), fanuc);
-    if dice.fork(1).chance(3) {
-        config.dialect = Dialect::Nc201;
-    }
+    let (mut config, mut w) = super::cycle_start(dice);
     let grid = config.grid;
     let (dec, lead_dec) = (grid.decimals(), grid.lead_decimals());
     let u = unit(grid);
-    let mut w = Writer::new(&mut dice.fork(2));
     let d = &mut dice.fork(40);
 
     // The start point A: G74 above the face, G75 outside the diameter.

@@ -5,10 +5,10 @@
 //! cycles refuse, a missing feed, a value out of range or finer than the grid, X with U, a broken
 //! number, a G code no dialect here has, inch and ISC grids, and the codes under `nc201`.
 
-use super::writer::{axis, tail, Writer};
-use super::{config, unit, Case, Dice, LEAD_UNIT, N};
+use super::writer::{axis, tail};
+use super::{unit, Case, Dice, LEAD_UNIT, N};
 use cycle_vocab::text::fixed;
-use cycle_vocab::{Config, Dialect};
+use cycle_vocab::Config;
 
 /// Which single cycle.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -76,15 +76,10 @@ fn taper(d: &mut Dice, cut: Cut, u: i64, w: i64, unit: i64) -> i64 {
 
 /// A single-cycle program of `cut`.
 fn build(dice: &mut Dice, cut: Cut) -> Case {
-    let fanuc = dice.fork(1).chance(30);
-    let mut config = config(&mut dice.fork(48), fanuc);
-    if dice.fork(1).chance(3) {
-        config.dialect = Dialect::Nc201;
-    }
+    let (config, mut w) = super::cycle_start(dice);
     let grid = config.grid;
     let (dec, lead_dec) = (grid.decimals(), grid.lead_decimals());
     let u = unit(grid);
-    let mut w = Writer::new(&mut dice.fork(2));
     let d = &mut dice.fork(8);
 
     // The start point A: outside the part (external) mostly, inside (internal) sometimes.
