@@ -16,6 +16,7 @@ pub mod schedule;
 pub mod depth_bounds;
 pub mod depth_step_monotone;
 pub mod depth_step_clamp;
+pub mod depth_step;
 pub mod fixed_point;
 pub mod mutation;
 pub mod expander_envelope;
