@@ -2,7 +2,8 @@
 """An example candidate expander for `cyclecheck`, in Python 3 (standard library only).
 
 It speaks the candidate protocol `cyclecheck-candidate/1` (docs/CANDIDATE.md): one JSON request
-per line on stdin, one JSON response per line on stdout. It is an independent implementation of
+per line on stdin, one JSON response per line on stdout. It refuses requests of schema version 2
+(programs with arcs or G70–G72), as a version-1 candidate should: they are reported as refused. It is an independent implementation of
 the G92 single thread cycle (M002) and of the program rules a G92 program needs, written from
 docs/RULES.md and docs/INTERPRETATION.md: the lexer (PRJ.LEX, PRJ.WORD), the modal interpreter
 (PRJ.MODAL, PRJ.SUPPORTED, COM.ABSINC, COM.LEAD), word values and ranges (COM.UNITS, COM.RANGES),

@@ -17,6 +17,9 @@
 //! | proof | `proofs/src` |
 //! | fuzz | `fuzz/fuzz_targets`, `oracle/src/fuzzing` |
 
+#[path = "build/identity.rs"]
+mod identity;
+
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -44,6 +47,9 @@ fn main() {
     println!("cargo:rerun-if-changed={}", rules_md.display());
     println!("cargo:rerun-if-changed={}", rule_rs.display());
     println!("cargo:rerun-if-changed=build.rs");
+    println!("cargo:rerun-if-changed=build");
+    identity::emit(&root);
+    lemmas(&root);
 
     let ids = catalogue_ids(&std::fs::read_to_string(&rules_md).unwrap_or_default());
     let variants = variants(&std::fs::read_to_string(&rule_rs).unwrap_or_default(), &ids);
@@ -349,4 +355,25 @@ fn span_end(lines: &[&str], start: usize) -> usize {
         }
     }
     lines.len().saturating_sub(1)
+}
+
+/// `$OUT_DIR/lemmas.rs`: the z3 lemma files of `smt/lemmas/` compiled in (stem, text), sorted,
+/// for the evidence's proofs section (`certify/proofs.rs`).
+fn lemmas(root: &std::path::Path) {
+    let dir = root.join("smt/lemmas");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).filter(|p| p.extension().is_some_and(|x| x == "smt2")).collect())
+        .unwrap_or_default();
+    files.sort();
+    if dir.exists() {
+        println!("cargo:rerun-if-changed={}", dir.display());
+    }
+    let mut out = String::from("[\n");
+    for f in &files {
+        let stem = f.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+        out.push_str(&format!("    ({stem:?}, include_str!({:?})),\n", f.display().to_string()));
+    }
+    out.push(']');
+    let dest = PathBuf::from(std::env::var("OUT_DIR").expect("cargo sets OUT_DIR")).join("lemmas.rs");
+    std::fs::write(dest, out).expect("OUT_DIR is writable");
 }

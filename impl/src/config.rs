@@ -26,6 +26,10 @@ pub struct Params {
     pub p5133_rough_retract: i64,
     pub arc_tolerance: i64,
     pub nose_radius: i64,
+    pub p5135_escape_x: i64,
+    pub p5136_escape_z: i64,
+    pub p5137_count: u32,
+    pub p5139_peck_return: i64,
 }
 
 /// The defaults this controller ships with.
@@ -47,6 +51,10 @@ pub const DEFAULTS: Params = Params {
     p5133_rough_retract: 500,
     arc_tolerance: 10,
     nose_radius: 0,
+    p5135_escape_x: 0,
+    p5136_escape_z: 0,
+    p5137_count: 1,
+    p5139_peck_return: 0,
 };
 
 fn out(word: Option<u8>, rule: Rule) -> Alarm {
@@ -78,7 +86,8 @@ fn length_from(set: Option<i64>, default: i64, lo: i64, rule: Rule) -> Result<i6
 }
 
 /// COM.RANGES, G92.JK.1, G92.JK.8, G92.HOLD, G76.PULLOUT, G76.DEFAULTS, G78.MODE,
-/// G78.DEPTHMODE, PRJ.MAXPASS, F76.FORMAT, NC201.XMODE, G71.PARAM, ARC.TOL, TNRC.RADIUS: the
+/// G78.DEPTHMODE, PRJ.MAXPASS, F76.FORMAT, NC201.XMODE, G71.PARAM, ARC.TOL, TNRC.RADIUS,
+/// G73.ESCAPE, G73.COUNT, G74.E: the
 /// configuration, in the register's order; the parameters in force when it is legal.
 pub fn check(c: &Config) -> Result<Params, Alarm> {
     let p = &c.params;
@@ -107,6 +116,10 @@ pub fn check(c: &Config) -> Result<Params, Alarm> {
         p5133_rough_retract: d.p5133_rough_retract,
         arc_tolerance: d.arc_tolerance,
         nose_radius: d.nose_radius,
+        p5135_escape_x: d.p5135_escape_x,
+        p5136_escape_z: d.p5136_escape_z,
+        p5137_count: d.p5137_count,
+        p5139_peck_return: d.p5139_peck_return,
     };
     if c.dialect == Dialect::Fanuc && !FANUC_ANGLES.contains(&params.p5143_tool_angle) {
         return Err(out(None, Rule::F76Format));
@@ -117,5 +130,24 @@ pub fn check(c: &Config) -> Result<Params, Alarm> {
     let p5133_rough_retract = length(p.p5133_rough_retract, d.p5133_rough_retract, Rule::G71Param)?;
     let arc_tolerance = length(p.arc_tolerance, d.arc_tolerance, Rule::ArcTol)?;
     let nose_radius = length(p.nose_radius, d.nose_radius, Rule::TnrcRadius)?;
-    Ok(Params { x_radius, p5132_rough_depth, p5133_rough_retract, arc_tolerance, nose_radius, ..params })
+    let signed = |set: Option<i64>, default: i64| {
+        let v = set.unwrap_or(default);
+        if v.unsigned_abs() <= MAX_LENGTH.unsigned_abs() { Ok(v) } else { Err(out(None, Rule::G73Escape)) }
+    };
+    let p5135_escape_x = signed(p.p5135_escape_x, d.p5135_escape_x)?;
+    let p5136_escape_z = signed(p.p5136_escape_z, d.p5136_escape_z)?;
+    let p5137_count = small(p.p5137_count, d.p5137_count, 1, 1_000_000, Rule::G73Count)?;
+    let p5139_peck_return = length(p.p5139_peck_return, d.p5139_peck_return, Rule::G74E)?;
+    Ok(Params {
+        x_radius,
+        p5132_rough_depth,
+        p5133_rough_retract,
+        arc_tolerance,
+        nose_radius,
+        p5135_escape_x,
+        p5136_escape_z,
+        p5137_count,
+        p5139_peck_return,
+        ..params
+    })
 }

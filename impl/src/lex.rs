@@ -110,6 +110,13 @@ impl Block {
         })
     }
 
+    /// Whether this block *is N(p)* (CNT.RANGE, "Sequence numbers"): its N word's exact value
+    /// equals `p` — `N50`, `N050`, `N+50`, `N50.0` are N50; `N-50`, `N50.5` and a block without
+    /// N are not.
+    pub fn is_sequence(&self, p: u64) -> bool {
+        self.get(b'N').is_some_and(|n| n.is(p))
+    }
+
     fn is_empty(&self) -> bool {
         self.g_count == 0 && self.present == 0
     }
@@ -150,6 +157,15 @@ pub struct Blocks<'a> {
     pos: usize,
     line: u32,
     done: bool,
+    /// Blocks read so far.
+    count: u64,
+}
+
+/// Where a reader stands between blocks ([`Blocks::mark`]): a byte offset and its line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Mark {
+    pos: usize,
+    line: u32,
 }
 
 /// The UTF-8 byte-order mark, skipped as the program's first three bytes (PRJ.LEX).
@@ -160,7 +176,28 @@ impl<'a> Blocks<'a> {
     /// editors on Windows write it). Anywhere else its first byte is a bad character.
     pub fn new(src: &'a [u8]) -> Blocks<'a> {
         let pos = if src.starts_with(&BOM) { BOM.len() } else { 0 };
-        Blocks { src, pos, line: 1, done: false }
+        Blocks { src, pos, line: 1, done: false, count: 0 }
+    }
+
+    /// A reader of `src` from `mark`, a place another reader of the same text stood at between
+    /// blocks (CNT.FIND: the contour of a G70 is read again from its first block).
+    pub fn resume(src: &'a [u8], mark: Mark) -> Blocks<'a> {
+        Blocks { src, pos: mark.pos, line: mark.line, done: false, count: 0 }
+    }
+
+    /// Where the reader stands: the next [`Blocks::read`] reads the block after this place.
+    pub fn mark(&self) -> Mark {
+        Mark { pos: self.pos, line: self.line }
+    }
+
+    /// The program text.
+    pub fn source(&self) -> &'a [u8] {
+        self.src
+    }
+
+    /// How many blocks this reader has read.
+    pub fn blocks_read(&self) -> u64 {
+        self.count
     }
 
     fn peek(&self) -> Option<u8> {
@@ -253,6 +290,9 @@ impl<'a> Blocks<'a> {
         block.clear();
         let read = self.block(block);
         self.done = !matches!(read, Ok(true));
+        if !self.done {
+            self.count += 1;
+        }
         read
     }
 

@@ -1,5 +1,6 @@
 //! Production expander of the lathe thread cycles G92, G76, G78, FANUC-style G76 and G162
-//! (`nc201`), of the thread moves G32, G33, G34 and of the single cutting cycles G90, G94.
+//! (`nc201`), of the thread moves G32, G33, G34, of the single cutting cycles G90, G94, of arcs
+//! G02/G03 and of the contour cycles G70, G71, G72 (M003).
 //!
 //! `no_std`, no heap, no floating point, no `unsafe`, no panics: [`Expander`] is a streaming
 //! iterator over the trace events of a program (PRJ.TRACE), computed on the integer grid with
@@ -13,7 +14,21 @@
 //! enum of everything that runs, dispatched by [`Expander`]), `g92`, `multipass` (G76/G78),
 //! `pullout`, `emit` (the per-pass move state machine of G92/G76/G78), [`g162`] (depth split,
 //! checks and its own move state machine), `thread_move` (G32/G33/G34), `g90` (G90/G94),
-//! `config`.
+//! [`arc`] (G02/G03: centres, tolerance, sweeps, exact roundings), [`contour`] (the contour
+//! buffer, CNT.FIND for G70), `rough` (G71/G72: checks, layer count, layers, semi-finish pass),
+//! `finish` (G70), `config`.
+//!
+//! **Memory.** An [`Expander`] holds the block being read (~0.5 KB), the machine state, what
+//! runs, and the contour buffer of the contour cycles: [`contour::MAX_BLOCKS`] (CNT.MAX,
+//! 1 000) elements of 48 bytes, 48 000 bytes, initialised on the first contour cycle (a
+//! program without one writes none of it). Nothing else grows with the program.
+//!
+//! **Magnitudes.** Every word and parameter is at most N = 999 999 999 < 2^30 increments
+//! (COM.RANGES) and the start point too, so a block moves the machine by at most N from where it
+//! stands (an absolute word puts it within N of 0; a cycle returns to its start after excursions
+//! below 2^52): after B blocks every position is below (B + 1)·N, under 2^61 for any program of
+//! fewer than 2^31 blocks (over 20 GB of text). The arithmetic is written, and its bounds proved
+//! in each module, for positions below 2^62; beyond, it saturates (never wraps, never panics).
 #![no_std]
 #![forbid(unsafe_code)]
 #![cfg_attr(
@@ -28,8 +43,11 @@
     )
 )]
 
+pub mod arc;
 pub mod config;
+pub mod contour;
 mod emit;
+mod finish;
 pub mod fixed;
 pub mod g162;
 /// Public (hidden) only so that the proof harnesses (`cycle-proofs`) can drive one G90/G94 cycle
@@ -46,11 +64,13 @@ pub mod number;
 /// amounts and geometry below the lexer; not part of the API.
 #[doc(hidden)]
 pub mod pullout;
+mod rough;
 mod run;
 pub mod schedule;
 mod thread_move;
 mod words;
 
+use contour::Contour;
 use cycle_vocab::{Alarm, Config, Event};
 use lex::{Block, Blocks};
 
@@ -76,6 +96,18 @@ pub struct Expander<'a> {
     done: bool,
     /// An alarm that [`Expander::fill`] met after writing events, returned by the next call.
     pending: Option<Alarm>,
+    /// The contour of the G70/G71/G72 cycle being carried out (CNT.MAX: at most
+    /// [`contour::MAX_BLOCKS`] elements, 48 000 bytes, initialised on first use). It lives here,
+    /// outside [`Run`], so that it is written once, in place, by the contour reader and never
+    /// copied: `Run` is moved by value; the running cycle keeps only its cursor.
+    contour: Contour,
+}
+
+/// What the block interpreter may read besides the block: the program's reader (a G71/G72 reads
+/// its contour ahead; a G70 reads the text again from its start) and the contour buffer.
+pub(crate) struct Program<'p, 'a> {
+    pub blocks: &'p mut Blocks<'a>,
+    pub contour: &'p mut Contour,
 }
 
 impl<'a> Expander<'a> {
@@ -89,6 +121,7 @@ impl<'a> Expander<'a> {
             ended: false,
             done: false,
             pending: None,
+            contour: Contour::new(),
         }
     }
 
@@ -113,7 +146,7 @@ impl<'a> Expander<'a> {
                 // The hot path, inlined here: a G92/G76/G78 cycle writes whole starts.
                 Run::Multipass(c) => c.fill(pos, rest),
                 Run::Idle => (0, false),
-                other => other.fill(pos, rest),
+                other => other.fill(pos, rest, &self.contour),
             };
             if written != 0 || done {
                 n += written;
@@ -179,7 +212,7 @@ impl Expander<'_> {
             }
         }
         loop {
-            if let Some(e) = self.run.next_event(&mut self.machine.pos) {
+            if let Some(e) = self.run.next_event(&mut self.machine.pos, &self.contour) {
                 return Some(Ok(e));
             }
             self.run = Run::Idle;
@@ -215,7 +248,8 @@ impl Expander<'_> {
             self.done = true;
             return Ok(false);
         }
-        self.ended = self.machine.block(&self.block, &mut self.run)?;
+        let mut program = Program { blocks: &mut self.blocks, contour: &mut self.contour };
+        self.ended = self.machine.block(&self.block, &mut self.run, &mut program)?;
         Ok(true)
     }
 }
@@ -231,3 +265,12 @@ mod front_tests;
 
 #[cfg(test)]
 mod g90_tests;
+
+#[cfg(test)]
+mod program_tests;
+
+#[cfg(test)]
+mod arc_tests;
+
+#[cfg(test)]
+mod contour_tests;

@@ -9,8 +9,11 @@ use crate::g90::{CutCode, CutState};
 use crate::g92::{G92State, PullMemo};
 use crate::lex::{letter_bit, letter_mask, Block};
 use crate::multipass::{Code, FirstBlock};
+use crate::rough::Axis;
 use crate::run::Run;
 use crate::thread_move::ThreadCode;
+use crate::Program;
+use contour_blocks::FirstValues;
 use crate::words::At;
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Move, Rule, Units};
 
@@ -18,6 +21,8 @@ use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Move, Rule, Units};
 mod cycles;
 #[path = "modal_values.rs"]
 mod values;
+#[path = "modal_contour.rs"]
+mod contour_blocks;
 
 /// The modal motion mode.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -29,6 +34,8 @@ pub enum Mode {
     Thread(ThreadCode),
     /// G90, G94 (G90.MODAL, G94.MODAL).
     Cut(CutCode),
+    /// G02 (clockwise, `true`), G03 (ARC.DIR).
+    Arc(bool),
 }
 
 /// How the block's words are read (its code, or the modal mode).
@@ -42,6 +49,34 @@ enum Kind {
     Thread(ThreadCode),
     G162,
     Cut(CutCode),
+    /// G50 (G50.COORD): set the current position.
+    G50,
+    /// G02 (`true`) / G03 (ARC.FORMAT).
+    Arc(bool),
+    /// G70 (G70.FORMAT).
+    G70,
+    /// G71/G72 without P and Q (Δd, e), and with them (G71.UW).
+    RoughFirst(Axis),
+    RoughSecond(Axis),
+}
+
+/// TNRC.CODES: the nose-radius compensation in force (G40 none, G41 left, G42 right).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Comp {
+    Off,
+    Left,
+    Right,
+}
+
+/// What step (2) found in a block's G and M codes.
+#[derive(Clone, Copy, Debug)]
+struct Codes {
+    /// The block's motion/cycle code, if any.
+    motion: Option<u64>,
+    /// M02 or M30: nothing after this block is read.
+    end: bool,
+    /// NC201.ABSINC: G90 (`Some(false)`) or G91 (`Some(true)`) under nc201.
+    absinc: Option<bool>,
 }
 
 /// The machine state carried from block to block.
@@ -64,6 +99,11 @@ pub struct Machine {
     g78: FirstBlock,
     /// NC201.ABSINC: G91 in force (`nc201` only).
     incremental: bool,
+    /// TNRC.CODES: the nose-radius compensation in force.
+    comp: Comp,
+    /// G71.PARAM: the values of the last G71 and G72 first blocks.
+    g71: FirstValues,
+    g72: FirstValues,
 }
 
 /// The converted words of one block; `None` where absent.
@@ -91,6 +131,10 @@ struct Vals {
     v: Option<i64>,
     /// G90 I (radius) or G94 K: the taper.
     taper: Option<i64>,
+    /// Arc I (radius, increments); its K is `k`, its R `r`.
+    i: Option<i64>,
+    /// Δd of a G71 (U) or G72 (W) first block; its e is `r`.
+    depth: Option<i64>,
 }
 
 /// Words every block accepts (no motion effect).
@@ -113,6 +157,13 @@ fn allowed(kind: Kind, dialect: Dialect) -> u32 {
         (Kind::First(_), Dialect::Gsk | Dialect::Nc201) => const { letter_mask(b"DELPQR") },
         (Kind::Second(_), Dialect::Fanuc) => const { letter_mask(b"FIPQRUWXZ") },
         (Kind::Second(_), Dialect::Gsk | Dialect::Nc201) => const { letter_mask(b"FIJKPQRUWXZ") },
+        // G50.COORD: X and Z, absolute only (S is common).
+        (Kind::G50, _) => const { letter_mask(b"XZ") },
+        (Kind::Arc(_), _) => const { letter_mask(b"FIKRUWXZ") },
+        // G70.FORMAT, G71.FORMAT, G72.FORMAT.
+        (Kind::G70 | Kind::RoughSecond(_), _) => const { letter_mask(b"FPQUW") },
+        (Kind::RoughFirst(Axis::G71), _) => const { letter_mask(b"RU") },
+        (Kind::RoughFirst(Axis::G72), _) => const { letter_mask(b"RW") },
     }
 }
 
@@ -134,16 +185,19 @@ impl Machine {
             g76: FirstBlock::defaults(&params, Code::G76),
             g78: FirstBlock::defaults(&params, Code::G78),
             incremental: false,
+            comp: Comp::Off,
+            g71: FirstValues { depth: params.p5132_rough_depth, retract: params.p5133_rough_retract },
+            g72: FirstValues { depth: params.p5132_rough_depth, retract: params.p5133_rough_retract },
         }
     }
 
     /// Reads one block: writes what it asks of the expander into `run` (in place: a cycle
     /// is not copied on its way out) and returns whether it ends the program (M02, M30).
-    pub fn block(&mut self, b: &Block, run: &mut Run) -> Result<bool, Alarm> {
+    pub fn block(&mut self, b: &Block, run: &mut Run, prog: &mut Program<'_, '_>) -> Result<bool, Alarm> {
         *run = Run::Idle;
         let line = b.line;
         let at = |letter: u8| At { letter, line };
-        let (motion, end, absinc) = self.codes(b)?;
+        let Codes { motion, end, absinc } = self.codes(b)?;
         let nc201 = self.config.dialect == Dialect::Nc201;
         let axis = if nc201 {
             b.has(b'X') || b.has(b'Z')
@@ -162,6 +216,15 @@ impl Machine {
             Some(162) => Kind::G162,
             Some(90) => Kind::Cut(CutCode::G90),
             Some(94) => Kind::Cut(CutCode::G94),
+            Some(50) => Kind::G50,
+            Some(70) => Kind::G70,
+            // G71.UW: a block with P or Q is the second block.
+            Some(71) if b.has(b'P') || b.has(b'Q') => Kind::RoughSecond(Axis::G71),
+            Some(71) => Kind::RoughFirst(Axis::G71),
+            Some(72) if b.has(b'P') || b.has(b'Q') => Kind::RoughSecond(Axis::G72),
+            Some(72) => Kind::RoughFirst(Axis::G72),
+            Some(2) => Kind::Arc(true),
+            Some(3) => Kind::Arc(false),
             Some(1) => Kind::Feed,
             Some(_) => Kind::Rapid,
             None => match self.mode {
@@ -170,6 +233,7 @@ impl Machine {
                 Mode::G92 => Kind::G92,
                 Mode::Thread(code) => Kind::Thread(code),
                 Mode::Cut(code) => Kind::Cut(code),
+                Mode::Arc(cw) => Kind::Arc(cw),
             },
         };
         // (2) conflicts: X/U, Z/W, and F/I in a thread block, where I is threads per inch (the
@@ -185,6 +249,10 @@ impl Machine {
             if !nc201 && applies && b.has(first) && b.has(second) {
                 return Err(at(second).alarm(AlarmCode::Conflict, rule));
             }
+        }
+        // ARC.FORMAT: R with I or K in an arc block.
+        if matches!(kind, Kind::Arc(_)) && b.has(b'R') && (b.has(b'I') || b.has(b'K')) {
+            return Err(at(b'R').alarm(AlarmCode::Conflict, Rule::ArcFormat));
         }
         if let Some(incremental) = absinc {
             // NC201.ABSINC: modal, in force from the block that writes it.
@@ -219,14 +287,22 @@ impl Machine {
             }
             Kind::G162 => self.g162(&v, line, run)?,
             Kind::Cut(code) => self.cut(code, motion.is_some(), &v, axis, line, run)?,
+            Kind::G50 => self.g50(&v),
+            Kind::Arc(cw) => {
+                *run = self.arc(cw, motion.is_some(), &v, axis, line)?.map_or(Run::Idle, Run::Move);
+            }
+            Kind::G70 => self.g70(&v, line, run, prog)?,
+            Kind::RoughFirst(code) => self.rough_first(code, &v),
+            Kind::RoughSecond(code) => self.rough_second(code, &v, line, run, prog)?,
         }
         Ok(end)
     }
 
-    /// (2) PRJ.SUPPORTED, PRJ.DIALECT, COM.UNITS, PRJ.WORD, NC201.ABSINC: the G codes in the
-    /// order written, then M; the block's motion/cycle code, whether it ends the program, and
-    /// its G90 (`Some(false)`) / G91 (`Some(true)`) under nc201.
-    fn codes(&self, b: &Block) -> Result<(Option<u64>, bool, Option<bool>), Alarm> {
+    /// (2) PRJ.SUPPORTED, PRJ.DIALECT, COM.UNITS, PRJ.WORD, NC201.ABSINC, TNRC.*: the G codes in
+    /// the order written, then M, then two motion/cycle codes, G90 with G91 (nc201), then the
+    /// nose-radius rules — TNRC.NOARC, TNRC.SWITCH (G, then T), TNRC.RADIUS — which update the
+    /// compensation in force.
+    fn codes(&mut self, b: &Block) -> Result<Codes, Alarm> {
         let line = b.line;
         let g_alarm = |code: AlarmCode, rule: Rule| Alarm::new(code, Some(b'G'), rule, line);
         let dialect = self.config.dialect;
@@ -235,19 +311,27 @@ impl Machine {
         let mut motions = 0u32;
         let mut absinc = None;
         let mut absincs = 0u32;
+        let mut tnrc = false;
         for g in b.g_codes() {
             if g.point || g.negative {
                 return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjSupported));
             }
             match g.mantissa {
                 0 | 1 => {}
+                2 | 3 if !nc201 => {}
                 // M003 / M001 / M002 codes are not defined for the M004 controller, and G162 only
                 // for it (PRJ.DIALECT).
-                92 | 76 | 32 | 33 | 34 | 90 | 94 if !nc201 => {}
+                92 | 76 | 32 | 33 | 34 | 90 | 94 | 50 | 70 | 71 | 72 if !nc201 => {}
                 78 if dialect == Dialect::Gsk => {}
                 162 if nc201 => {}
-                // Under nc201 G90 is the absolute mode (below) and G94 is not defined.
-                32 | 33 | 34 | 76 | 78 | 92 | 94 | 162 => {
+                40..=42 | 96 | 98 if !nc201 => {
+                    tnrc |= matches!(g.mantissa, 40..=42);
+                    continue;
+                }
+                // Under nc201 G90 is the absolute mode (below) and G94 is not defined; nor are the
+                // codes of the contour cycles (M003).
+                32 | 33 | 34 | 76 | 78 | 92 | 94 | 162 => return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjDialect)),
+                2 | 3 | 41 | 42 | 50 | 70 | 71 | 72 | 96 | 98 if nc201 => {
                     return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjDialect))
                 }
                 90 | 91 if nc201 => {
@@ -285,7 +369,43 @@ impl Machine {
         if absincs > 1 {
             return Err(g_alarm(AlarmCode::Conflict, Rule::Nc201AbsInc));
         }
-        Ok((motion, end, absinc))
+        if tnrc || b.has(b'T') {
+            self.compensation(b, motion)?;
+        }
+        Ok(Codes { motion, end, absinc })
+    }
+
+    /// TNRC.NOARC, TNRC.SWITCH, TNRC.RADIUS (check step 2, after the two-motion-codes conflict):
+    /// G40/G41/G42 with G02/G03; G41 while G42 is in force or G42 while G41 is (the codes taken in
+    /// the order written); a T word after which G41 or G42 is still in force; G41/G42 with a
+    /// nose radius. The compensation in force is updated.
+    fn compensation(&mut self, b: &Block, motion: Option<u64>) -> Result<(), Alarm> {
+        let g_alarm = |code: AlarmCode, rule: Rule| Alarm::new(code, Some(b'G'), rule, b.line);
+        let codes = || b.g_codes().iter().map(|g| g.mantissa).filter(|m| matches!(m, 40..=42));
+        if matches!(motion, Some(2 | 3)) && codes().next().is_some() {
+            return Err(g_alarm(AlarmCode::Conflict, Rule::TnrcNoarc));
+        }
+        let mut comp = self.comp;
+        let mut side = false;
+        for code in codes() {
+            comp = match (code, comp) {
+                (41, Comp::Right) | (42, Comp::Left) => {
+                    return Err(g_alarm(AlarmCode::WordNotAllowed, Rule::TnrcSwitch))
+                }
+                (41, _) => Comp::Left,
+                (42, _) => Comp::Right,
+                _ => Comp::Off,
+            };
+            side |= code != 40;
+        }
+        if b.has(b'T') && comp != Comp::Off {
+            return Err(Alarm::new(AlarmCode::WordNotAllowed, Some(b'T'), Rule::TnrcSwitch, b.line));
+        }
+        if side && self.params.nose_radius != 0 {
+            return Err(g_alarm(AlarmCode::Unsupported, Rule::TnrcRadius));
+        }
+        self.comp = comp;
+        Ok(())
     }
 
     /// COM.ABSINC: the end point from X(U), Z(W): U and W are added to the position `from`; an
@@ -340,5 +460,11 @@ impl Machine {
             return Ok(Some(Move::feed(x, z, f, Rule::PrjModal)));
         }
         Ok(Some(Move::rapid(x, z, Rule::PrjModal)))
+    }
+
+    /// G50.COORD: X and Z make the current position (work coordinates from now on); an omitted
+    /// axis keeps its value. No motion, no event; the motion mode and any run go on.
+    fn g50(&mut self, v: &Vals) {
+        self.pos = (v.x.unwrap_or(self.pos.0), v.z.unwrap_or(self.pos.1));
     }
 }

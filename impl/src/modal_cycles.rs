@@ -3,6 +3,7 @@
 //! G90/G94 (G90.MODAL, G94.MODAL) and G162 (G162.FORMAT); each writes what runs.
 
 use super::{Machine, Mode, Vals};
+use crate::arc::{self, Centre};
 use crate::g162::{self, SplitParams};
 use crate::g90::{self, CutCode};
 use crate::g92;
@@ -218,5 +219,29 @@ impl Machine {
             Err(a) => return Err(a),
         }
         Ok(())
+    }
+
+    /// ARC.FORMAT, ARC.*: a G02/G03 block (or one in the arc mode). Without axis words it only
+    /// sets the feed; with them (4) the feed (COM.LEAD), then R or I/K (MISSING WORD R,
+    /// ARC.FORMAT), then (5) the arc's checks and its move.
+    pub(super) fn arc(&mut self, cw: bool, coded: bool, v: &Vals, axis: bool, line: u32) -> Result<Option<Move>, Alarm> {
+        if let Some(f) = v.lead {
+            self.feed = Some(f);
+        }
+        if coded {
+            self.mode = Mode::Arc(cw);
+        }
+        if !axis {
+            return Ok(None);
+        }
+        let missing = |word: u8, rule: Rule| Alarm::new(AlarmCode::MissingWord, Some(word), rule, line);
+        let feed = self.feed.ok_or(missing(b'F', Rule::ComLead))?;
+        let words = match (v.r, v.i, v.k) {
+            (Some(r), _, _) => Centre::R(r),
+            (None, None, None) => return Err(missing(b'R', Rule::ArcFormat)),
+            (None, i, k) => Centre::Ik(i.unwrap_or(0), k.unwrap_or(0)),
+        };
+        let to = Self::end_point(v, self.pos, self.pos);
+        arc::arc_move(self.pos, to, cw, words, feed, self.params.arc_tolerance, line).map(Some)
     }
 }

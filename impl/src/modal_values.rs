@@ -6,10 +6,11 @@ use super::{Kind, Machine, Vals, FANUC_ANGLES};
 use crate::g162::max_lead;
 use crate::g90::CutCode;
 use crate::multipass::Code;
+use crate::rough::Axis;
 use crate::number::Number;
 use crate::thread_move::{ThreadCode, MAX_START_ANGLE};
 use crate::words::{
-    infeed_angle, integer_in, lead_f, lead_i, length_in, scaled_in, signed_length, signed_lead, At, MAX_G92_JK, MAX_LENGTH,
+    arc_radius, infeed_angle, integer_in, lead_f, lead_i, length_in, scaled_in, signed_length, signed_lead, At, MAX_G92_JK, MAX_LENGTH,
 };
 use cycle_vocab::{Alarm, AlarmCode, Dialect, Rule};
 
@@ -21,11 +22,25 @@ impl Machine {
         // F76.MICRONS: FANUC G76 P(k), Q(Δd), Q(Δdmin) without a decimal point are increments.
         let micro = self.config.dialect == Dialect::Fanuc;
         let n_max = MAX_LENGTH;
+        let n_len = |lo: i64, rule: Rule| scaled_in(n, grid.decimals(), lo, MAX_LENGTH, rule, at);
         if kind == Kind::G162 {
             return self.value_g162(letter, n, at, v);
         }
         match (kind, letter) {
             (_, b'F') => v.lead = Some(lead_f(n, grid, at)?),
+            // ARC.FORMAT: I (radius) and K signed lengths; ARC.R: R a length 1 … N (R ≤ 0
+            // under ARC.R, R > N under COM.RANGES).
+            (Kind::Arc(_), b'I') => v.i = Some(signed_length(n, grid, at)?),
+            (Kind::Arc(_), b'K') => v.k = Some(signed_length(n, grid, at)?),
+            (Kind::Arc(_), b'R') => v.r = Some(arc_radius(n, grid, at)?),
+            // CNT.PQ: sequence numbers, integers 1 … 99 999.
+            (Kind::G70 | Kind::RoughSecond(_), b'P') => v.p = Some(integer_in(n, 1, 99_999, Rule::CntPq, at)?),
+            (Kind::G70 | Kind::RoughSecond(_), b'Q') => v.q = Some(integer_in(n, 1, 99_999, Rule::CntPq, at)?),
+            // G71.DEPTH, G71.RETRACT, G72.DEPTH: Δd 1 … N, e 0 … N.
+            (Kind::RoughFirst(Axis::G71), b'U') => v.depth = Some(n_len(1, Rule::G71Depth)?),
+            (Kind::RoughFirst(Axis::G71), b'R') => v.r = Some(n_len(0, Rule::G71Retract)?),
+            (Kind::RoughFirst(Axis::G72), b'W') => v.depth = Some(n_len(1, Rule::G72Depth)?),
+            (Kind::RoughFirst(Axis::G72), b'R') => v.r = Some(n_len(0, Rule::G72Depth)?),
             // NC201.XMODE: X of G00/G01 by `x_radius`.
             (_, b'X') if self.config.dialect == Dialect::Nc201 => v.x = Some(self.x_word(n, at)?),
             // G90.FORMAT, G94.FORMAT: the taper, a signed length (I is no lead here).

@@ -76,6 +76,12 @@ impl Number {
         Ok(if self.negative { -v } else { v })
     }
 
+    /// Whether the number's exact value is `p` (`50`, `050`, `+50`, `50.0` are 50; `-50`, `50.5`
+    /// are not): mantissa = p · 10^decimals.
+    pub fn is(self, p: u64) -> bool {
+        !self.negative && pow10(u32::from(self.decimals)).and_then(|s| p.checked_mul(s)) == Some(self.mantissa)
+    }
+
     /// The number as an integer; an error when written with a decimal point.
     pub fn integer(self) -> Result<i64, NumberError> {
         if self.point {

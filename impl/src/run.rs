@@ -2,9 +2,12 @@
 //! out, each a small state machine that yields one event per call (`next_event`) or writes its
 //! next events straight into the caller's buffer (`fill`). [`crate::Expander`] dispatches on it.
 
+use crate::contour::Contour;
 use crate::emit::{self, emit};
+use crate::finish;
 use crate::g162;
 use crate::g90;
+use crate::rough::Roughing;
 use cycle_vocab::{Event, Move};
 
 /// What a block asks of the expander while it is carried out.
@@ -22,13 +25,17 @@ pub enum Run {
     G162(g162::Cycle),
     /// A G90 or G94 cycle (G90.PATH, G94.PATH).
     Cut(g90::Cycle),
+    /// A G71 or G72 cycle (G71.LAYER …): its geometry and cursor; the contour is the expander's.
+    Rough(Roughing),
+    /// A G70 cycle (G70.PATH).
+    Finish(finish::Cycle),
 }
 
 impl Run {
     /// The next event, updating the machine position `pos`; `None` when the family is done
     /// (it must then not be asked again: the caller makes it [`Run::Idle`]). Bounded work: each
     /// family's own bound.
-    pub fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
+    pub fn next_event(&mut self, pos: &mut (i64, i64), contour: &Contour) -> Option<Event> {
         match self {
             Run::Idle => None,
             Run::Move(m) => {
@@ -39,6 +46,8 @@ impl Run {
             Run::Multipass(c) => c.next_event(pos),
             Run::G162(c) => c.next_event(pos),
             Run::Cut(c) => c.next_event(pos),
+            Run::Rough(c) => c.next_event(pos, contour),
+            Run::Finish(c) => c.next_event(pos, contour),
         }
     }
 
@@ -47,12 +56,14 @@ impl Run {
     /// not empty. Kept out of line: [`crate::Expander::fill`] inlines the G92/G76/G78 arm, the
     /// hot path, itself.
     #[inline(never)]
-    pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> (usize, bool) {
+    pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event], contour: &Contour) -> (usize, bool) {
         match self {
             Run::Idle => (0, true),
             Run::Multipass(c) => c.fill(pos, out),
             Run::G162(c) => fill_each(out, || c.next_event(pos)),
             Run::Cut(c) => fill_each(out, || c.next_event(pos)),
+            Run::Rough(c) => c.fill(pos, out, contour),
+            Run::Finish(c) => fill_each(out, || c.next_event(pos, contour)),
             Run::Move(m) => {
                 let m = *m;
                 let Some(slot) = out.first_mut() else {

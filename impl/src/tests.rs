@@ -73,7 +73,7 @@ pub fn passes(t: &Trace) -> Vec<Pass> {
         .iter()
         .filter_map(|e| match e {
             Event::Pass(p) => Some(*p),
-            Event::Move(_) => None,
+            _ => None,
         })
         .collect()
 }

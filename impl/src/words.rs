@@ -81,6 +81,20 @@ pub fn scaled_in(n: Number, places: u32, lo: i64, hi: i64, rule: Rule, at: At) -
     Ok(v)
 }
 
+/// ARC.R: an arc's R, a length 1 … N — R ≤ 0 is `OUT OF RANGE` under ARC.R, R > N under
+/// COM.RANGES (the generic range of a length, however large: docs/INTERPRETATION.md, "Arcs").
+pub fn arc_radius(n: Number, grid: Grid, at: At) -> Result<i64, Alarm> {
+    let rule = if n.negative { Rule::ArcR } else { Rule::ComRanges };
+    let v = n.scaled(grid.decimals()).map_err(|e| scale_error(e, at, rule))?;
+    if v < 1 {
+        return Err(at.alarm(AlarmCode::OutOfRange, Rule::ArcR));
+    }
+    if v > MAX_LENGTH {
+        return Err(at.out_of_range());
+    }
+    Ok(v)
+}
+
 /// A signed value on the lead grid with |v| ≤ `max`, else `OUT OF RANGE` with `rule` (G34 K,
 /// G162 I).
 pub fn signed_lead(n: Number, grid: Grid, max: i64, rule: Rule, at: At) -> Result<i64, Alarm> {

@@ -1,18 +1,17 @@
 //! Differential campaigns: many programs through two engines, the first as the reference, each
-//! pair of traces judged by the conformance relation ([`crate::conformance::check`]).
+//! pair of traces judged by the conformance relation in lockstep ([`crate::judge`]).
 //!
 //! A campaign never stops at a divergence: it records every case's outcome, counts cases per
 //! cycle and per ending (clean or which alarm), and keeps each divergent case whole (name,
 //! program, configuration, divergence) for the report. An engine that panics is recorded as
 //! such, not propagated.
 
-use crate::conformance::{self, alarm_short, Divergence};
-use crate::engine::Engine;
-use cycle_vocab::text::Trace;
+use crate::conformance::{alarm_short, Divergence};
+use crate::engine::{Engine, FailureKind};
+use crate::judge::{CaseResult, Seen};
 use crate::registry::{self, CycleRun};
-use cycle_vocab::{Alarm, Config, Event};
+use cycle_vocab::{Alarm, Config};
 use std::collections::BTreeMap;
-use std::panic::{catch_unwind, AssertUnwindSafe};
 
 /// How a case ended.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -132,32 +131,16 @@ impl Report {
     }
 }
 
-fn panic_message(p: Box<dyn std::any::Any + Send>) -> String {
-    match p.downcast::<String>() {
-        Ok(s) => *s,
-        Err(p) => p.downcast_ref::<&str>().map_or_else(|| "panic".to_string(), |s| s.to_string()),
-    }
-}
-
-fn expand(engine: &dyn Engine, program: &[u8], config: &Config) -> Result<Trace, Verdict> {
-    catch_unwind(AssertUnwindSafe(|| engine.expand(program, config)))
-        .map_err(|p| Verdict::Panic { engine: engine.name().to_string(), message: panic_message(p) })
-}
-
-/// Runs one case: both engines, then the relation.
-pub fn judge(engines: (&dyn Engine, &dyn Engine), program: &[u8], config: &Config) -> (Option<Trace>, Verdict) {
-    let reference = match expand(engines.0, program, config) {
-        Ok(t) => t,
-        Err(v) => return (None, v),
+/// Runs one case: both engines in lockstep, judged by the relation; what the reference showed.
+pub fn judge(engines: (&dyn Engine, &dyn Engine), program: &[u8], config: &Config) -> (Option<Seen>, Verdict) {
+    let j = crate::judge::judge(engines.0, engines.1, program, config);
+    let verdict = match j.result {
+        CaseResult::Conform => Verdict::Conform(j.reference.as_ref().and_then(|r| r.alarm)),
+        CaseResult::Diverge(d) => Verdict::Diverge(d),
+        CaseResult::Failure { engine, failure } if failure.kind == FailureKind::Panic => Verdict::Panic { engine, message: failure.message },
+        CaseResult::Failure { engine, failure } => Verdict::Panic { engine, message: format!("candidate failure: {failure}") },
     };
-    let verdict = match expand(engines.1, program, config) {
-        Err(v) => v,
-        Ok(candidate) => match conformance::check(&reference, &candidate) {
-            Ok(()) => Verdict::Conform(reference.alarm),
-            Err(d) => Verdict::Diverge(Box::new(d)),
-        },
-    };
-    (Some(reference), verdict)
+    (j.reference, verdict)
 }
 
 /// Runs every case through both engines (`engines.0` the reference) and collects the report.
@@ -165,10 +148,8 @@ pub fn run(engines: (&dyn Engine, &dyn Engine), cases: impl Iterator<Item = (Str
     let mut report = Report { engines: (engines.0.name().to_string(), engines.1.name().to_string()), ..Report::default() };
     for (name, program, config) in cases {
         let (reference, verdict) = judge(engines, &program, &config);
-        let cycle = registry::cycle_run(&program, &config, reference.as_ref());
-        let (events, passes) = reference.as_ref().map_or((0, 0), |t| {
-            (t.events.len(), t.events.iter().filter(|e| matches!(e, Event::Pass(_))).count())
-        });
+        let cycle = registry::cycle_run_until(&program, &config, reference.as_ref().and_then(|r| r.alarm.as_ref()));
+        let (events, passes) = reference.as_ref().map_or((0, 0), |r| (r.events, r.passes));
         *report.by_cycle.entry(cycle).or_default() += 1;
         let ending = match reference.as_ref().map(|t| t.alarm) {
             Some(None) => "clean".to_string(),

@@ -2,6 +2,12 @@
 //! feature (`tests/programs/*.nc`), compiled in, each with the configuration it runs under and
 //! the rule IDs it illustrates.
 //!
+//! A program *illustrates* a rule when running it shows the rule at work, whether or not a move
+//! carries the rule's tag: `g76_example` illustrates G76.DEFAULTS (its second block omits R: i
+//! = 0), G76.FINISH.Z (its two finishing passes at the Z of the last rough one) and PRJ.NOOP (its
+//! last G00 goes where the cycle ended: not emitted). The traceability matrix counts a rule
+//! illustrated by a program that ran and conformed as exercised.
+//!
 //! Configurations follow the files' header comments: `f76_ex1_microns` runs under the `fanuc`
 //! dialect (F76.MICRONS), the G162 programs under `nc201` (M004), the `*_inch` programs in inch
 //! units (they write G20), the rest under the defaults (gsk, metric, ISB, start X0 Z0). The G78 example as printed has infeed mode 05,
@@ -29,6 +35,8 @@ pub struct Program {
     pub text: &'static str,
     pub dialect: Dialect,
     pub units: Units,
+    /// The increment system (ISB, or ISC where the header says `--increment isc`).
+    pub increment: Increment,
     /// The rule IDs the program illustrates.
     pub rules: &'static [Rule],
     /// `Some` when the program is expected to end in this alarm.
@@ -40,24 +48,27 @@ impl Program {
     pub fn config(&self) -> Config {
         Config {
             dialect: self.dialect,
-            grid: Grid { units: self.units, increment: Increment::Isb },
+            grid: Grid { units: self.units, increment: self.increment },
             ..Config::default()
         }
     }
 }
 
 macro_rules! program {
-    ($dir:literal, $name:literal, $dialect:ident, $units:ident, [$($rule:ident),* $(,)?] $(, alarm $code:ident $word:literal $arule:ident)?) => {
+    ($dir:literal, $name:literal, $dialect:ident, $units:ident $(/ $increment:ident)?, [$($rule:ident),* $(,)?] $(, alarm $code:ident $word:literal $arule:ident)?) => {
         Program {
             name: $name,
             path: concat!($dir, "/", $name, ".nc"),
             text: include_str!(concat!("../../", $dir, "/", $name, ".nc")),
             dialect: Dialect::$dialect,
             units: Units::$units,
+            increment: program!(@increment $($increment)?),
             rules: &[$(Rule::$rule),*],
             expect_alarm: program!(@alarm $($code $word $arule)?),
         }
     };
+    (@increment) => { Increment::Isb };
+    (@increment $increment:ident) => { Increment::$increment };
     (@alarm) => { None };
     (@alarm $code:ident $word:literal $rule:ident) => {
         Some(ExpectedAlarm { code: AlarmCode::$code, word: Some($word), rule: Rule::$rule })
@@ -67,15 +78,17 @@ macro_rules! program {
 /// Every built-in program: the manuals' examples first, then the feature programs.
 pub const PROGRAMS: &[Program] = &[
     // The manuals' examples (corpus/).
-    program!("corpus", "g92_example", Gsk, Metric, [G92Example, G92Format, G92Modal, G92Path, G92Pullout]),
-    program!("corpus", "g76_example", Gsk, Metric, [G76Example, G76Format, G76Depth1, G76DepthMin, G76DepthLast, G76Finish, G76Pullout, G76Path]),
+    program!("corpus", "g92_example", Gsk, Metric, [G92Example, G92Format, G92Modal, G92Path, G92Pullout, ComAxes, PrjTrace]),
+    program!("corpus", "g76_example", Gsk, Metric, [G76Example, G76Format, G76Depth1, G76DepthMin, G76DepthLast, G76Finish, G76FinishZ, G76Defaults, G76Pullout, G76Path, PrjNoop]),
     program!("corpus", "g78_example", Gsk, Metric, [G78Example, G78Format, G78Mode], alarm OutOfRange b'P' G78Mode),
     program!("corpus", "f76_ex1", Gsk, Metric, [F76Ex1, F76Format, G76Depth1, G76DepthLast, G76Finish, G76Pullout]),
     program!("corpus", "f76_ex1_microns", Fanuc, Metric, [F76Ex1, F76Microns, PrjDialect, F76Format]),
     program!("corpus", "f76_ex2", Gsk, Metric, [F76Ex2, F76Format, G76Depth1, G76DepthMin, G76DepthLast, G76Finish]),
-    program!("corpus", "g162_cone", Nc201, Metric, [G162F, G162W, G162Pq, G162Path, Nc201XMode]),
+    program!("corpus", "g162_cone", Nc201, Metric, [G162Format, G162F, G162W, G162Pq, G162Path, Nc201XMode]),
     program!("corpus", "g90_example", Gsk, Metric, [G90Example, G90Format, G90Modal, G90Path, G90Taper]),
     program!("corpus", "g94_example", Gsk, Metric, [G94Example, G94Format, G94Modal, G94Path]),
+    program!("corpus", "g71_example", Gsk, Metric, [G71Example, G71Format, G71Layer, G71Retract, G71Lastpass, G71Return, ArcR, G50Coord, G70Path, G70Return]),
+    program!("corpus", "g72_example", Gsk, Metric, [G72Example, G72Format, G72Layer, G72Retract, G72Lastpass, G72Return, G70Path]),
     // One program per feature (tests/programs/).
     program!("tests/programs", "g92_taper", Gsk, Metric, [G92Taper, G92Pullout, G92Modal, ComLongAxis]),
     program!("tests/programs", "g92_internal", Gsk, Metric, [ComSide, G92Jk1, G92Pullout, G92Modal]),
@@ -105,6 +118,13 @@ pub const PROGRAMS: &[Program] = &[
     program!("tests/programs", "g90_modal_runs", Gsk, Metric, [G90Modal, G94Modal, G90Path]),
     program!("tests/programs", "g90_inch", Gsk, Inch, [ComUnits, G90Format, G90Path]),
     program!("tests/programs", "g94_taper", Gsk, Metric, [G94Taper, G94Path, G94Modal]),
+    program!("tests/programs", "g71_bore", Gsk, Metric, [G71Layer, G71Allow, G71Monotone, G71Lastpass]),
+    program!("tests/programs", "g70_arcs_ik", Gsk, Metric, [ArcIk, ArcDir, G70Path, G70Feed, CntFlow]),
+    program!("tests/programs", "g71_vertex_on_layer", Gsk, Metric, [G71Layer, G71Lastpass]),
+    program!("tests/programs", "g71_deep_cut", Gsk, Metric, [G71Layer, G71Lastpass, G71Return]),
+    program!("tests/programs", "g70_after_g71", Gsk, Metric, [G70Uw, G70Path, G70Return, CntFind, CntFlow]),
+    program!("tests/programs", "g72_inch", Gsk, Inch, [ComUnits, G72Layer, G72Retract, ArcR]),
+    program!("tests/programs", "g71_isc", Gsk, Metric / Isc, [ComUnits, G71Layer, ArcR, G71Allow]),
 ];
 
 /// The program named `name` (file stem).
@@ -149,6 +169,7 @@ mod tests {
             assert_eq!(header.contains("--dialect fanuc"), p.dialect == Dialect::Fanuc, "{}", p.name);
             assert_eq!(header.contains("--dialect nc201"), p.dialect == Dialect::Nc201, "{}", p.name);
             assert_eq!(header.contains("--units inch"), p.units == Units::Inch, "{}", p.name);
+            assert_eq!(header.contains("--increment isc"), p.increment == Increment::Isc, "{}", p.name);
             assert!(!p.rules.is_empty(), "{} illustrates no rule", p.name);
         }
     }

@@ -1,9 +1,10 @@
 //! The engines under comparison, behind one trait (in the style of wasmtime's fuzzing oracles:
 //! each engine turns the same input into a comparable result, the oracle compares results).
 //!
-//! - [`SpecEngine`]: the executable reference, `cycle_spec::expand`.
-//! - [`ImplEngine`]: the production expander, `cycle_impl::Expander`, a streaming iterator
-//!   collected into a [`Trace`].
+//! - [`SpecEngine`]: the executable reference, `cycle_spec::expand`; it pushes its events into
+//!   a sink as it emits them (`cycle_spec::expand_into`, [`Engine::push`]).
+//! - [`ImplEngine`]: the production expander, `cycle_impl::Expander`, a pull iterator of events
+//!   ([`Engine::pull`]), read to its end: no bound on the events taken.
 //!
 //! - [`crate::candidate::CandidateEngine`]: a vendor's expander run as a child process that
 //!   reads programs and configurations and answers JSON traces (`docs/CANDIDATE.md`).
@@ -11,9 +12,26 @@
 //! An engine that can fail outside the program — a child process that times out, crashes or
 //! answers garbage — says so through [`Engine::try_expand`] with a classified [`Failure`]; a
 //! campaign records it as that case's finding, never as a pass.
+//!
+//! Nothing here collects a trace unless asked to ([`Engine::expand`]): the comparison
+//! ([`crate::judge`]) runs the reference's push against the candidate's pull in lockstep, so
+//! memory does not grow with the trace.
 
 use cycle_vocab::text::Trace;
-use cycle_vocab::Config;
+use cycle_vocab::{Alarm, Config, Event};
+use std::ops::ControlFlow;
+
+/// Where a pushed trace goes, event by event; `Break` asks for no more events.
+pub type Sink<'s> = &'s mut dyn FnMut(Event) -> ControlFlow<()>;
+
+/// A trace as a pull stream: its events, then its alarm as `Err` (the form of
+/// `cycle_impl::Expander`).
+pub type Stream<'a> = Box<dyn Iterator<Item = Result<Event, Alarm>> + 'a>;
+
+/// A whole trace as a [`Stream`].
+pub fn stream_of(trace: Trace) -> Stream<'static> {
+    Box::new(trace.events.into_iter().map(Ok).chain(trace.alarm.map(Err)))
+}
 
 /// An expander of programs into traces.
 pub trait Engine {
@@ -26,6 +44,25 @@ pub trait Engine {
     /// way (the default); the candidate engine can (timeout, crash, garbage, …).
     fn try_expand(&self, program: &[u8], config: &Config) -> Result<Trace, Failure> {
         Ok(self.expand(program, config))
+    }
+
+    /// Pushes the trace into `sink` event by event and returns its alarm (the trace's grid is
+    /// the configuration's). After `Break` the sink gets no more events and the result says
+    /// nothing of the rest. By default the trace is expanded whole, then pushed.
+    fn push(&self, program: &[u8], config: &Config, sink: Sink) -> Result<Option<Alarm>, Failure> {
+        let trace = self.try_expand(program, config)?;
+        for e in trace.events {
+            if sink(e).is_break() {
+                return Ok(None);
+            }
+        }
+        Ok(trace.alarm)
+    }
+
+    /// The trace as a pull stream, with its grid. By default the trace is expanded whole.
+    fn pull<'a>(&'a self, program: &'a [u8], config: &'a Config) -> Result<(cycle_vocab::Grid, Stream<'a>), Failure> {
+        let trace = self.try_expand(program, config)?;
+        Ok((trace.grid, stream_of(trace)))
     }
 }
 
@@ -94,30 +131,17 @@ impl Engine for SpecEngine {
     fn expand(&self, program: &[u8], config: &Config) -> Trace {
         cycle_spec::expand(program, config)
     }
-}
 
-/// The production expander (`cycle-impl`), collected from its stream of events.
-///
-/// The stream is read up to `event_limit` events, so that a production expander that never
-/// ends cannot hang a campaign: a stream cut there (and not ended by an alarm) is a trace with
-/// more events than any reference shorter than the limit, and so diverges from it. The spec
-/// bounds every cycle by `max_passes` (PRJ.MAXPASS), far below the default limit for any
-/// program of ordinary length.
-#[derive(Clone, Copy, Debug)]
-pub struct ImplEngine {
-    pub event_limit: usize,
-}
-
-impl ImplEngine {
-    /// The default bound on the events read from the stream.
-    pub const DEFAULT_EVENT_LIMIT: usize = 4_000_000;
-}
-
-impl Default for ImplEngine {
-    fn default() -> ImplEngine {
-        ImplEngine { event_limit: ImplEngine::DEFAULT_EVENT_LIMIT }
+    fn push(&self, program: &[u8], config: &Config, sink: Sink) -> Result<Option<Alarm>, Failure> {
+        Ok(cycle_spec::expand_into(program, config, sink))
     }
 }
+
+/// The production expander (`cycle-impl`): its stream of events, read to the end. Nothing cuts
+/// it: every cycle is bounded by `max_passes` (PRJ.MAXPASS) in both engines, and a program by
+/// its length, so the whole trace is always there to compare.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ImplEngine;
 
 impl Engine for ImplEngine {
     fn name(&self) -> &str {
@@ -125,8 +149,22 @@ impl Engine for ImplEngine {
     }
 
     fn expand(&self, program: &[u8], config: &Config) -> Trace {
-        let stream = cycle_impl::Expander::new(program, *config).take(self.event_limit);
-        Trace::collect(config.grid, stream)
+        Trace::collect(config.grid, cycle_impl::Expander::new(program, *config))
+    }
+
+    fn push(&self, program: &[u8], config: &Config, sink: Sink) -> Result<Option<Alarm>, Failure> {
+        for item in cycle_impl::Expander::new(program, *config) {
+            match item {
+                Ok(e) if sink(e).is_break() => return Ok(None),
+                Ok(_) => {}
+                Err(a) => return Ok(Some(a)),
+            }
+        }
+        Ok(None)
+    }
+
+    fn pull<'a>(&'a self, program: &'a [u8], config: &'a Config) -> Result<(cycle_vocab::Grid, Stream<'a>), Failure> {
+        Ok((config.grid, Box::new(cycle_impl::Expander::new(program, *config))))
     }
 }
 
@@ -134,7 +172,7 @@ impl Engine for ImplEngine {
 pub fn by_name(name: &str) -> Option<Box<dyn Engine>> {
     match name {
         "spec" => Some(Box::new(SpecEngine)),
-        "impl" => Some(Box::new(ImplEngine::default())),
+        "impl" => Some(Box::new(ImplEngine)),
         _ => None,
     }
 }
@@ -196,7 +234,7 @@ mod tests {
     #[test]
     fn impl_engine_collects_the_stream_on_the_config_grid() {
         let c = Config { grid: cycle_vocab::Grid { units: cycle_vocab::Units::Inch, ..c_grid() }, ..Config::default() };
-        let t = ImplEngine::default().expand(b"G0 X1 Z1\n", &c);
+        let t = ImplEngine.expand(b"G0 X1 Z1\n", &c);
         assert_eq!(t.grid, c.grid);
         let direct = Trace::collect(c.grid, cycle_impl::Expander::new(b"G0 X1 Z1\n", c));
         assert_eq!(t, direct);

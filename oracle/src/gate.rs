@@ -45,14 +45,23 @@ pub struct Options {
     pub root: PathBuf,
 }
 
+/// Cases of the in-process campaign by default.
+pub const DEFAULT_CASES: u32 = 3_000;
+/// The gate's seed by default.
+pub const DEFAULT_SEED: u64 = 0x5eed_6a7e;
+/// `CYCLECHECK_CASES` of the `cargo test` step by default.
+pub const DEFAULT_TEST_CASES: u32 = 2_000;
+/// `CYCLECHECK_PROOF_CASES` of the `cargo test` step by default.
+pub const DEFAULT_PROOF_CASES: u64 = 200_000;
+
 impl Default for Options {
     fn default() -> Options {
         Options {
-            cases: 3_000,
-            seed: 0x5eed_6a7e,
+            cases: DEFAULT_CASES,
+            seed: DEFAULT_SEED,
             cargo_test: true,
-            test_cases: 2_000,
-            proof_cases: 200_000,
+            test_cases: DEFAULT_TEST_CASES,
+            proof_cases: DEFAULT_PROOF_CASES,
             root: PathBuf::from("."),
         }
     }
@@ -90,7 +99,7 @@ fn findings_text(report: &campaign::Report) -> String {
 /// Step 1.
 pub fn corpus_step() -> Step {
     step("corpus", || {
-        let r = campaign::run((&SpecEngine, &ImplEngine::default()), corpus::cases());
+        let r = campaign::run((&SpecEngine, &ImplEngine), corpus::cases());
         let summary = format!("{} programs, {} conform; by cycle: {}", r.cases(), r.conforming(), crate::registry::counts_line(&r.by_cycle));
         (r.all_conform(), summary, findings_text(&r))
     })
@@ -106,7 +115,7 @@ pub fn campaign_step(cases: u32, seed: u64) -> Step {
             let case = strategy.new_tree(&mut runner).ok()?.current();
             Some((format!("{}#{i}", case.family), case.program, case.config))
         });
-        let r = campaign::run((&SpecEngine, &ImplEngine::default()), cases);
+        let r = campaign::run((&SpecEngine, &ImplEngine), cases);
         let panics = r.findings.iter().filter(|f| matches!(f.verdict, Verdict::Panic { .. })).count();
         let summary = format!(
             "seed {seed:#x}: {} cases, {} conform, {} panics; by cycle: {}",
@@ -256,29 +265,14 @@ pub fn report(steps: &[Step], total: Duration) -> String {
     s
 }
 
-/// `cyclecheck gate [--cases N] [--seed S] [--no-cargo-test] [--test-cases N] [--proof-cases N]`,
-/// run from the repository root: prints the report, returns the exit code (0 passed, 1 failed).
-pub fn command(args: &[String]) -> Result<u8, String> {
-    let mut o = Options::default();
-    let mut it = args.iter();
-    while let Some(arg) = it.next() {
-        let mut value = |name: &str| -> Result<u64, String> {
-            let v = it.next().ok_or_else(|| format!("{name} needs a value"))?;
-            v.parse().map_err(|_| format!("{name} takes a non-negative integer, not {v:?}"))
-        };
-        match arg.as_str() {
-            "--cases" => o.cases = u32::try_from(value("--cases")?).map_err(|_| "--cases: too large".to_string())?,
-            "--seed" => o.seed = value("--seed")?,
-            "--test-cases" => o.test_cases = u32::try_from(value("--test-cases")?).map_err(|_| "--test-cases: too large".to_string())?,
-            "--proof-cases" => o.proof_cases = value("--proof-cases")?,
-            "--no-cargo-test" => o.cargo_test = false,
-            other => return Err(format!("gate: unknown argument {other:?}")),
-        }
-    }
+
+/// `cyclecheck gate`, run from the repository root: prints the report, returns the exit code
+/// (0 every step passed, 1 otherwise).
+pub fn command(o: &Options) -> Result<u8, String> {
     if !o.root.join("fuzz/seeds").is_dir() {
         return Err("gate: run it from the repository root (no fuzz/seeds here)".to_string());
     }
-    let (steps, total) = run(&o);
+    let (steps, total) = run(o);
     print!("{}", report(&steps, total));
     Ok(if steps.iter().all(|s| s.passed) { 0 } else { 1 })
 }

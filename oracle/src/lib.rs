@@ -2,7 +2,7 @@
 //! ([`engine`]), the conformance relation and trace diff ([`conformance`]), the rule catalogue as
 //! data ([`catalogue`]), the cycle families ([`registry`]), the built-in corpus of the manuals'
 //! programs ([`corpus`]), proptest generators of programs and configurations ([`gen`]), and
-//! differential campaigns ([`campaign`]). The `cyclecheck` binary is a thin CLI over these.
+//! differential campaigns ([`campaign`]) judged case by case in lockstep ([`judge`]). The `cyclecheck` binary is a thin CLI over these.
 //!
 //! ```
 //! use cycle_oracle::engine::{Engine, SpecEngine};
@@ -23,7 +23,10 @@ pub mod engine;
 pub mod fuzzing;
 pub mod gate;
 pub mod gen;
+pub mod hint;
+pub mod judge;
 pub mod nightly;
+pub mod reaper;
 pub mod readback;
 pub mod registry;
 

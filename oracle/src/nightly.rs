@@ -304,51 +304,54 @@ pub fn summary_text(plan: &Plan, summaries: &[TargetSummary]) -> String {
     t
 }
 
-/// `cyclecheck fuzz [--budget SECS] [--targets T,..] [--out DIR] [--features F]`,
-/// `cyclecheck fuzz --write-seeds` or `cyclecheck fuzz --decode TARGET FILE [NAME]`, run from the
-/// repository root: prints the text summary, returns the exit code (0 nothing found, 1 findings
-/// or a failed step).
-pub fn command(args: &[String]) -> Result<u8, String> {
+/// Seconds of fuzzing per target by default.
+pub const DEFAULT_BUDGET: u64 = 300;
+/// Where the scratch corpora, artifacts, logs and summary go by default.
+pub const DEFAULT_OUT: &str = "cyclecheck-out/fuzz";
+
+/// What `cyclecheck fuzz` was asked to do.
+#[derive(Clone, Debug)]
+pub enum Request {
+    /// A campaign over `plan` (its root is filled in by [`command`]).
+    Campaign { budget: u64, targets: Vec<Target>, out: PathBuf, features: Option<String> },
+    /// `--write-seeds`.
+    WriteSeeds,
+    /// `--decode TARGET FILE [NAME]`.
+    Decode { target: Target, file: PathBuf, name: Option<String> },
+}
+
+/// Parses `--targets`: a comma list of target names.
+pub fn parse_targets(list: &str) -> Result<Vec<Target>, String> {
+    list.split(',').map(|n| Target::by_name(n.trim()).ok_or_else(|| format!("--targets: no target {:?} (one of {})", n.trim(), target_names()))).collect()
+}
+
+/// The targets' names, comma-separated.
+pub fn target_names() -> String {
+    Target::ALL.iter().map(|t| t.name()).collect::<Vec<_>>().join(", ")
+}
+
+/// `cyclecheck fuzz`, run from the repository root: a campaign prints the text summary and
+/// returns the exit code (0 nothing found, 1 findings or a failed step).
+pub fn command(c: Request) -> Result<u8, String> {
     let root = PathBuf::from(".");
     if !root.join("fuzz/Cargo.toml").is_file() {
         return Err("fuzz: run it from the repository root (no fuzz/Cargo.toml here)".to_string());
     }
-    let mut plan = Plan { budget: 300, targets: Target::ALL.to_vec(), out: PathBuf::from("cyclecheck-out/fuzz"), features: None, root };
-    let mut it = args.iter();
-    while let Some(arg) = it.next() {
-        let mut value = |name: &str| it.next().cloned().ok_or_else(|| format!("{name} needs a value"));
-        match arg.as_str() {
-            "--budget" => {
-                let v = value("--budget")?;
-                plan.budget = v.parse().ok().filter(|&b| b > 0).ok_or_else(|| format!("--budget takes seconds > 0, not {v:?}"))?;
-            }
-            "--targets" => {
-                let v = value("--targets")?;
-                plan.targets = v
-                    .split(',')
-                    .map(|n| Target::by_name(n.trim()).ok_or_else(|| format!("--targets: no target {n:?}")))
-                    .collect::<Result<_, _>>()?;
-            }
-            "--out" => plan.out = PathBuf::from(value("--out")?),
-            "--features" => plan.features = Some(value("--features")?),
-            "--write-seeds" => {
-                let n = committed::write_seeds(&plan.root)?;
-                println!("wrote {n} decoded seeds under fuzz/seeds/ and encoded them into fuzz/corpus/");
-                return Ok(0);
-            }
-            "--decode" => {
-                let target = value("--decode")?;
-                let target = Target::by_name(&target).ok_or_else(|| format!("--decode: no target {target:?}"))?;
-                let file = PathBuf::from(it.next().ok_or("--decode TARGET needs a FILE")?);
-                let stem = file.file_name().map(|f| f.to_string_lossy().into_owned()).unwrap_or_default();
-                let name = it.next().cloned().unwrap_or(stem);
-                let report = committed::write_regression(&plan.root, target, &file, &name, "cyclecheck fuzz --decode")?;
-                println!("wrote {}/{name}: {report}", committed::regressions_dir(&plan.root, target).display());
-                return Ok(0);
-            }
-            other => return Err(format!("fuzz: unknown argument {other:?}")),
+    let plan = match c {
+        Request::WriteSeeds => {
+            let n = committed::write_seeds(&root)?;
+            println!("wrote {n} decoded seeds under fuzz/seeds/ and encoded them into fuzz/corpus/");
+            return Ok(0);
         }
-    }
+        Request::Decode { target, file, name } => {
+            let stem = file.file_name().map(|f| f.to_string_lossy().into_owned()).unwrap_or_default();
+            let name = name.unwrap_or(stem);
+            let report = committed::write_regression(&root, target, &file, &name, "cyclecheck fuzz --decode")?;
+            println!("wrote {}/{name}: {report}", committed::regressions_dir(&root, target).display());
+            return Ok(0);
+        }
+        Request::Campaign { budget, targets, out, features } => Plan { budget, targets, out, features, root },
+    };
     std::fs::create_dir_all(&plan.out).map_err(|e| format!("{}: {e}", plan.out.display()))?;
     let (summaries, text) = run(&plan);
     print!("{text}");

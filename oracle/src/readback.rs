@@ -1,7 +1,8 @@
 //! A reader of canonical expanded G-code (the format `cycle_vocab::text` prints and the README
 //! documents): the header comment, then one motion per block, `G00 X Z`, `G01 X Z F`,
-//! `G32 X Z F [Q] [K [J]] [R]` or `G02`/`G03 X Z I K F` (I, K the absolute centre); pass and alarm
-//! comments are passed over.
+//! `G32 X Z F [Q] [K [J]] [R]` or `G02`/`G03 X Z I K F` (I, K the absolute centre), and the
+//! non-motion events `G04 P` (a dwell) and `M03`/`M04` (the spindle); pass and alarm comments are
+//! passed over.
 //!
 //! It reads the printed form back into motions on the integer grid, so a vendor's expander that
 //! prints G-code can be compared motion by motion, and so the printer is checked by a round
@@ -11,7 +12,7 @@
 
 use cycle_spec::lex::{Block, Blocks, Number};
 use cycle_vocab::text::fixed;
-use cycle_vocab::{Grid, Increment, Move, MoveKind, Units};
+use cycle_vocab::{Dwell, Event, Grid, Increment, Move, MoveKind, Spindle, SpindleState, Units};
 use num_traits::ToPrimitive;
 
 /// One motion as the canonical form prints it (the rule tag is not printed).
@@ -45,6 +46,27 @@ impl From<&Move> for Motion {
     }
 }
 
+/// One printed event as read back: a motion, a dwell (ms), or a spindle event.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Printed {
+    Motion(Motion),
+    Dwell(u32),
+    Spindle(SpindleState),
+}
+
+impl Printed {
+    /// What the canonical form prints of `event` (every field but the rule tag); `None` for a
+    /// pass header (a comment).
+    pub fn of(event: &Event) -> Option<Printed> {
+        match event {
+            Event::Pass(_) => None,
+            Event::Move(m) => Some(Printed::Motion(Motion::from(m))),
+            Event::Dwell(Dwell { ms, rule: _ }) => Some(Printed::Dwell(*ms)),
+            Event::Spindle(Spindle { state, rule: _ }) => Some(Printed::Spindle(*state)),
+        }
+    }
+}
+
 /// The header line of canonical G-code on `grid`.
 pub fn header(grid: Grid) -> String {
     format!("(CYCLECHECK TRACE {} GRID {})", grid.unit_name(), fixed(1, grid.decimals()))
@@ -57,8 +79,8 @@ const GRIDS: [Grid; 4] = [
     Grid { units: Units::Inch, increment: Increment::Isc },
 ];
 
-/// Reads canonical G-code: its grid (from the header) and its motions, in order.
-pub fn read(text: &[u8]) -> Result<(Grid, Vec<Motion>), String> {
+/// Reads canonical G-code: its grid (from the header) and its events but pass headers, in order.
+pub fn read(text: &[u8]) -> Result<(Grid, Vec<Printed>), String> {
     let first = text.split(|&b| b == b'\n').next().unwrap_or_default();
     let grid = GRIDS
         .into_iter()
@@ -67,9 +89,28 @@ pub fn read(text: &[u8]) -> Result<(Grid, Vec<Motion>), String> {
     let mut motions = Vec::new();
     for block in Blocks::new(text) {
         let block = block.map_err(|a| format!("line {}: {} (word {:?})", a.line, a.code.text(), a.word.map(char::from)))?;
-        motions.push(motion(&block, grid)?);
+        motions.push(event(&block, grid)?);
     }
     Ok((grid, motions))
+}
+
+/// A block: `G04 P`, `M03`, `M04`, or a motion.
+fn event(block: &Block, grid: Grid) -> Result<Printed, String> {
+    let line = block.line;
+    let codes: Vec<String> = block.g_codes().map(|g| g.to_string()).collect();
+    let only = |letters: &[u8]| block.letters().iter().all(|l| letters.contains(l));
+    if codes == ["4"] && only(b"P") {
+        let p = block.get(b'P').filter(|n| !n.point && !n.negative).and_then(|n| n.mantissa().to_u32());
+        return p.map(Printed::Dwell).ok_or_else(|| format!("line {line}: word P: not a dwell in ms"));
+    }
+    if codes.is_empty() && block.letters() == [b'M'] {
+        return match block.get(b'M').map(|m| m.to_string()).as_deref() {
+            Some("3") => Ok(Printed::Spindle(SpindleState::Forward)),
+            Some("4") => Ok(Printed::Spindle(SpindleState::Reverse)),
+            _ => Err(format!("line {line}: word M: not M03 or M04")),
+        };
+    }
+    motion(block, grid).map(Printed::Motion)
 }
 
 fn motion(block: &Block, grid: Grid) -> Result<Motion, String> {
@@ -151,8 +192,8 @@ mod tests {
         let t = SpecEngine.expand(b"G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\n", &Config::default());
         let (grid, motions) = read(t.to_gcode().as_bytes()).unwrap();
         assert_eq!(grid, t.grid);
-        assert_eq!(motions, t.moves().map(Motion::from).collect::<Vec<_>>());
-        assert!(motions.iter().any(|m| m.kind == MoveKind::Thread && m.feed == 30_000));
+        assert_eq!(motions, t.events.iter().filter_map(Printed::of).collect::<Vec<_>>());
+        assert!(motions.iter().any(|p| matches!(p, Printed::Motion(m) if m.kind == MoveKind::Thread && m.feed == 30_000)));
     }
 
     #[test]
@@ -174,13 +215,13 @@ mod tests {
             lead_floor: 0,
         };
         let second = Motion { z: -90_000, angle: 0, lead_change_angle: 90_000, lead_floor: 5, ..first };
-        assert_eq!(m, vec![first, second]);
+        assert_eq!(m, vec![Printed::Motion(first), Printed::Motion(second)]);
         // Arcs: the absolute centre as I (X, diameter) and K.
         let arc = cycle_vocab::Move::arc(true, 29_000, -47_848, 32_000, -40_500, 1_000_000, cycle_vocab::Rule::ArcR);
         let line = cycle_vocab::text::Trace::event_line(Grid::METRIC_ISB, &cycle_vocab::Event::Move(arc));
         assert_eq!(line, "G02 X29.000 Z-47.848 I32.000 K-40.500 F100.0000");
         let (_, m) = read(format!("{}\n{line}\n", header(Grid::METRIC_ISB)).as_bytes()).unwrap();
-        assert_eq!(m, vec![Motion::from(&arc)]);
+        assert_eq!(m, vec![Printed::Motion(Motion::from(&arc))]);
         let printed = cycle_vocab::text::Trace {
             grid: inch,
             events: vec![cycle_vocab::Event::Move(cycle_vocab::Move::variable_thread(
@@ -195,7 +236,26 @@ mod tests {
             ))],
             alarm: None,
         };
-        assert_eq!(read(printed.to_gcode().as_bytes()).unwrap().1, vec![second]);
+        assert_eq!(read(printed.to_gcode().as_bytes()).unwrap().1, vec![Printed::Motion(second)]);
+    }
+
+    #[test]
+    fn reads_dwell_and_spindle_back() {
+        use cycle_vocab::{Dwell, Event, Rule, Spindle};
+        let events = vec![
+            Event::Dwell(Dwell { ms: 1500, rule: Rule::G84Path }),
+            Event::Spindle(Spindle { state: SpindleState::Reverse, rule: Rule::G84Path }),
+            Event::Spindle(Spindle { state: SpindleState::Forward, rule: Rule::G84Path }),
+        ];
+        let printed = cycle_vocab::text::Trace { grid: Grid::METRIC_ISB, events: events.clone(), alarm: None };
+        let (_, read_back) = read(printed.to_gcode().as_bytes()).unwrap();
+        assert_eq!(read_back, events.iter().filter_map(Printed::of).collect::<Vec<_>>());
+        assert_eq!(read_back, vec![Printed::Dwell(1500), Printed::Spindle(SpindleState::Reverse), Printed::Spindle(SpindleState::Forward)]);
+        let h = header(Grid::METRIC_ISB);
+        for (body, needle) in [("G04 P1.5", "word P"), ("G04 P-1", "word P"), ("M05", "word M")] {
+            let e = read(format!("{h}\n{body}\n").as_bytes()).unwrap_err();
+            assert!(e.contains(needle), "{body}: {e}");
+        }
     }
 
     #[test]

@@ -1,6 +1,7 @@
 //! The cycle families, in one table ([`FAMILIES`]). A family is a cycle as a run exercises it —
 //! G92, G76 under gsk, G78, G76 under fanuc, G162 under nc201, the thread moves G32/G33/G34, the
-//! single cutting cycles G90 and G94 —
+//! single cutting cycles G90 and G94, the stock-removal cycles G71 and G72 and the finishing
+//! cycle G70 —
 //! and its row drives every consumer: the `--cycles` option and its help text, certify's
 //! generated runs, which cycle a case runs ([`cycle_run`]: the per-cycle counts of `corpus`,
 //! `diff`, the gate and certify), the snapshot folders, the bench cases, the fuzz input's
@@ -12,7 +13,7 @@
 use crate::gen::{self, Builder, Case};
 use cycle_vocab::text::Trace;
 use cycle_spec::lex::{self, Number};
-use cycle_vocab::{Config, Dialect, Rule};
+use cycle_vocab::{Alarm, Config, Dialect, Rule};
 use num_traits::ToPrimitive;
 use proptest::strategy::BoxedStrategy;
 use std::cmp::Ordering;
@@ -115,13 +116,48 @@ pub const FAMILIES: &[Family] = &[
         rule_prefixes: &["G94"],
         bench: gen::single_cut::g94_bench,
     },
+    // The contour (CNT.*) is read and checked alike by G71, G72 and G70; the matrix lists a rule
+    // once, so its rules stand with g71, the first of the three. Arcs (ARC.*), G50 and the
+    // nose-radius codes (TNRC.*) are program words any program may carry whatever cycle it runs
+    // (an arc or a G50 is no cycle): they are common ([`COMMON_PREFIXES`]).
+    Family {
+        name: "g71",
+        display: "G71",
+        dialects: &[Gsk, Fanuc],
+        codes: &[71],
+        build: gen::contour::g71,
+        rule_prefixes: &["G71", "CNT"],
+        bench: gen::contour::g71_bench,
+    },
+    Family {
+        name: "g72",
+        display: "G72",
+        dialects: &[Gsk, Fanuc],
+        codes: &[72],
+        build: gen::contour::g72,
+        rule_prefixes: &["G72"],
+        bench: gen::contour::g72_bench,
+    },
+    // G70 as the first cycle: a G70 finishing a contour written before it, without a roughing
+    // cycle (a G70 after G71 or G72 runs in that cycle's family).
+    Family {
+        name: "g70",
+        display: "G70",
+        dialects: &[Gsk, Fanuc],
+        codes: &[70],
+        build: gen::contour::g70,
+        rule_prefixes: &["G70"],
+        bench: gen::contour::g70_bench,
+    },
 ];
 
 /// The sizes the bench runs each family's bench case at.
 pub const BENCH_SIZES: [usize; 3] = [1, 100, 9_900];
 
-/// The catalogue prefixes of the rules every family follows.
-pub const COMMON_PREFIXES: &[&str] = &["COM", "PRJ"];
+/// The catalogue prefixes of the rules every family follows: the common rules, the project's,
+/// and the program words of M003 any program may write whatever cycle it runs — arcs G02/G03
+/// (ARC.*), G50 (G50.*) and the nose-radius codes G40/G41/G42 (TNRC.*).
+pub const COMMON_PREFIXES: &[&str] = &["COM", "PRJ", "ARC", "G50", "TNRC"];
 
 /// Cases per cycle run on one line: `G92 7, G76 8, …, alarm before a cycle 2`.
 pub fn counts_line(counts: &BTreeMap<CycleRun, usize>) -> String {
@@ -248,7 +284,12 @@ impl CycleRun {
 /// The blocks are read with the reference's lexer (`cycle_spec::lex`); this is the one place
 /// that reads them for it.
 pub fn cycle_run(program: &[u8], config: &Config, reference: Option<&Trace>) -> CycleRun {
-    let alarm_line = reference.and_then(|t| t.alarm).map(|a| a.line);
+    cycle_run_until(program, config, reference.and_then(|t| t.alarm.as_ref()))
+}
+
+/// [`cycle_run`] knowing only the reference's alarm (`None`: it ended cleanly or failed).
+pub fn cycle_run_until(program: &[u8], config: &Config, alarm: Option<&Alarm>) -> CycleRun {
+    let alarm_line = alarm.map(|a| a.line);
     for block in lex::blocks(program) {
         let Ok(block) = block else { break };
         if alarm_line.is_some_and(|line| block.line > line) {
@@ -328,6 +369,10 @@ mod tests {
         assert_eq!(run(b"G76 P1", Gsk, None), "g76");
         assert_eq!(run(b"G0 X1\ng033 Z-1 F1\nG92 X1", Gsk, None), "g32");
         assert_eq!(run(b"G162 G91 X1", Nc201, None), "g162");
+        // A contour written before G70 (arcs, G50: no family) runs G70; G71 before G70 runs G71.
+        assert_eq!(run(b"G50 X10 Z0\nN1 G0 X5 F1\nN2 G2 X9 Z-2 R2\nG70 P1 Q2", Gsk, None), "g70");
+        assert_eq!(run(b"G71 P1 Q2 F1\nN1 G0 X5\nN2 G1 Z-2\nG70 P1 Q2", Fanuc, None), "g71");
+        assert_eq!(run(b"G72 W1", Nc201, Some(1)), "alarm_before_cycle");
         // G92.1 and G-92 select nothing; G78 selects nothing under fanuc.
         assert_eq!(run(b"G92.1\nG-92\nG0 X1", Gsk, None), "no_cycle");
         assert_eq!(run(b"G78 P1", Fanuc, Some(1)), "alarm_before_cycle");
@@ -351,6 +396,13 @@ mod tests {
         assert_eq!(rule_group(Rule::G33), RuleGroup::Family(find("g32").unwrap()));
         assert_eq!(rule_group(Rule::ComLead), RuleGroup::Common);
         assert_eq!(rule_group(Rule::G163), RuleGroup::Other);
+        // The contour's rules stand with g71; arcs, G50 and the nose-radius codes are common.
+        assert_eq!(rule_group(Rule::CntFind), RuleGroup::Family(find("g71").unwrap()));
+        assert_eq!(rule_group(Rule::G72Layer), RuleGroup::Family(find("g72").unwrap()));
+        assert_eq!(rule_group(Rule::G70Uw), RuleGroup::Family(find("g70").unwrap()));
+        for rule in [Rule::ArcTol, Rule::G50Coord, Rule::TnrcSwitch] {
+            assert_eq!(rule_group(rule), RuleGroup::Common, "{rule}");
+        }
     }
 
     #[test]

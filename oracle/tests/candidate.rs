@@ -44,6 +44,12 @@ fn evidence(out: &Path) -> serde_json::Value {
     serde_json::from_slice(&std::fs::read(out.join("evidence.json")).expect("evidence.json written")).expect("JSON")
 }
 
+/// The bundle's `cases.jsonl`, one JSON object per case.
+fn case_lines(out: &Path) -> Vec<serde_json::Value> {
+    let text = std::fs::read_to_string(out.join("cases.jsonl")).expect("cases.jsonl written");
+    text.lines().map(|l| serde_json::from_str(l).expect("a JSON line")).collect()
+}
+
 fn example_candidate(bug: bool) -> String {
     let script = root().join("examples/g92_candidate.py");
     format!("python3 '{}'{}", script.display(), if bug { " --plant-bug" } else { "" })
@@ -63,6 +69,14 @@ fn the_example_candidate_passes() {
     assert_eq!(e["summary"]["passed"], true);
     assert_eq!(e["candidate"]["name"], "candidate");
     assert_eq!(e["candidate"]["command"][0], "python3");
+    // What was tested: the interpreter and the script, hashed.
+    let id = &e["identity"]["candidate"];
+    assert!(id["executable"]["path"].as_str().unwrap().contains("python3"), "{id}");
+    assert_eq!(id["executable"]["sha256"].as_str().map(str::len), Some(64), "{id}");
+    assert!(id["files"][0]["path"].as_str().unwrap().ends_with("examples/g92_candidate.py"), "{id}");
+    let script = std::fs::read(root().join("examples/g92_candidate.py")).unwrap();
+    assert_eq!(id["files"][0]["sha256"], cycle_oracle::certify::identity::sha256(&script));
+    assert_eq!(e["identity"]["build"]["commit"], cycle_oracle::certify::identity::BUILD.commit);
     assert!(e["summary"]["cases"].as_u64().unwrap() >= 60, "{}", e["summary"]);
     assert!(out.join("index.html").is_file() && out.join("plots/g92_example.svg").is_file());
     std::fs::remove_dir_all(&out).unwrap();
@@ -91,7 +105,8 @@ fn the_planted_bug_is_named_by_move_and_rule() {
     assert!(stdout.contains("rule: G92.PULLOUT (M002, impl)"), "{stdout}");
     let e = evidence(&out);
     assert_eq!(e["summary"]["passed"], false);
-    let case = e["cases"].as_array().unwrap().iter().find(|c| c["name"] == "g92_example").unwrap();
+    let cases = case_lines(&out);
+    let case = cases.iter().find(|c| c["name"] == "g92_example").unwrap();
     assert_eq!(case["result"], "diverge");
     assert_eq!(case["divergence"]["index"], index);
     assert_eq!(case["divergence"]["field"], "x");
@@ -125,7 +140,7 @@ fn a_hostile_candidate_is_classified_case_by_case() {
     let stdout = String::from_utf8_lossy(&o.stdout);
     assert_eq!(o.status.code(), Some(1), "{stdout}\n{}", String::from_utf8_lossy(&o.stderr));
     let e = evidence(&out);
-    let cases = e["cases"].as_array().unwrap();
+    let cases = case_lines(&out);
     assert_eq!(cases.len() as u64, e["summary"]["cases"].as_u64().unwrap());
     assert!(cases.len() >= 6, "{}", e["summary"]);
     let kinds: Vec<&str> = cases.iter().map(|c| c["kind"].as_str().unwrap_or("")).collect();
@@ -137,7 +152,8 @@ fn a_hostile_candidate_is_classified_case_by_case() {
     assert_eq!(cases[4]["message"], r#"argv ["two words", "$HOME;echo", "q\"uote"]"#, "{}", cases[4]);
     // Restarted after each of the four failures that leave the child in an unknown state.
     assert_eq!(e["candidate"]["process_starts"], 5);
-    assert_eq!(e["failures"]["timeout"], 1);
+    assert_eq!(e["failures"]["by_kind"]["timeout"], 1);
+    assert!(!cases[3]["message"].as_str().unwrap().contains("exit exit"), "{}", cases[3]);
     std::fs::remove_dir_all(&out).unwrap();
 }
 
@@ -166,4 +182,111 @@ fn diff_runs_a_candidate_on_several_files() {
         .unwrap();
     assert_eq!(o.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&o.stdout).contains("FAILURE of the candidate engine (spawn failed)"));
+}
+
+/// The pids a forking candidate recorded: every candidate and grandchild it started.
+fn recorded_pids(file: &Path) -> Vec<u32> {
+    let text = std::fs::read_to_string(file).unwrap_or_default();
+    text.split_whitespace().map(|p| p.parse().unwrap()).collect()
+}
+
+/// Whether `pid` still runs (a zombie waiting for its reaper does not).
+fn alive(pid: u32) -> bool {
+    match std::fs::read_to_string(format!("/proc/{pid}/stat")) {
+        Ok(stat) => !stat.rsplit(')').next().unwrap_or("").trim_start().starts_with('Z'),
+        Err(_) => false,
+    }
+}
+
+fn none_alive(pids: &[u32]) -> bool {
+    // Killed processes vanish as soon as their parent (or init) reaps them.
+    (0..100).any(|_| {
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        pids.iter().all(|&p| !alive(p))
+    })
+}
+
+/// A candidate that starts a sleeping grandchild and never answers: each case times out, the
+/// candidate's whole process group is killed, and after `--max-failures 2` the run stops,
+/// saying so — nothing survives it.
+#[test]
+fn a_hung_candidate_and_its_children_are_killed_and_the_run_stops() {
+    if !python3() {
+        return;
+    }
+    let out = out_dir("forking");
+    let pids = out_dir("forking-pids").with_extension("txt");
+    let script = root().join("oracle/tests/fixtures/forking_candidate.py");
+    let candidate = format!("python3 '{}' '{}'", script.display(), pids.display());
+    let o = certify(&out, &candidate, &["--cases", "5", "--timeout-ms", "1500", "--max-failures", "2"]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "{stdout}\n{}", String::from_utf8_lossy(&o.stderr));
+    assert!(stdout.contains("STOPPED after 2 consecutive candidate failures"), "{stdout}");
+    let e = evidence(&out);
+    assert_eq!(e["summary"]["stopped"]["consecutive_failures"], 2);
+    assert_eq!(e["summary"]["cases"], 2);
+    let started = recorded_pids(&pids);
+    assert_eq!(started.len(), 4, "two candidates, each with a grandchild: {started:?}");
+    assert!(none_alive(&started), "survivors: {:?}", started.iter().filter(|&&p| alive(p)).collect::<Vec<_>>());
+    std::fs::remove_dir_all(&out).unwrap();
+    let _ = std::fs::remove_file(&pids);
+}
+
+/// SIGTERM to cyclecheck: the candidate and its grandchild are killed, no staging directory is
+/// left, and cyclecheck exits 130.
+#[test]
+fn sigterm_kills_the_candidate_group_and_leaves_no_bundle() {
+    if !python3() {
+        return;
+    }
+    let parent = out_dir("sigterm");
+    std::fs::create_dir_all(&parent).unwrap();
+    let out = parent.join("evidence");
+    let pids = parent.join("pids.txt");
+    let script = root().join("oracle/tests/fixtures/forking_candidate.py");
+    let candidate = format!("python3 '{}' '{}'", script.display(), pids.display());
+    let mut child = Command::new(env!("CARGO_BIN_EXE_cyclecheck"))
+        .arg("certify")
+        .arg("--out")
+        .arg(&out)
+        .args(["--cycles", "g92", "--cases", "1", "--timeout-ms", "60000", "--candidate", &candidate])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(30);
+    while recorded_pids(&pids).len() < 2 {
+        assert!(std::time::Instant::now() < deadline, "the candidate never started");
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    let kill = Command::new("kill").args(["-TERM", &child.id().to_string()]).status().unwrap();
+    assert!(kill.success());
+    let status = child.wait().unwrap();
+    assert_eq!(status.code(), Some(130), "{status:?}");
+    let started = recorded_pids(&pids);
+    assert!(none_alive(&started), "survivors: {:?}", started.iter().filter(|&&p| alive(p)).collect::<Vec<_>>());
+    let left: Vec<_> = std::fs::read_dir(&parent).unwrap().map(|e| e.unwrap().file_name()).collect();
+    assert_eq!(left, [std::ffi::OsString::from("pids.txt")], "no bundle, no staging directory");
+    std::fs::remove_dir_all(&parent).unwrap();
+}
+
+/// `--out` is checked before the run: a file, or a directory that is no bundle, is refused at
+/// once (exit 2) and left as it was.
+#[test]
+fn out_is_checked_before_anything_runs() {
+    let parent = out_dir("bad-out");
+    std::fs::create_dir_all(parent.join("precious")).unwrap();
+    std::fs::write(parent.join("precious/keep.txt"), b"keep").unwrap();
+    std::fs::write(parent.join("file"), b"x").unwrap();
+    for (out, says) in [("precious", "not an evidence bundle"), ("file", "not an evidence bundle")] {
+        let started = std::time::Instant::now();
+        let o = Command::new(env!("CARGO_BIN_EXE_cyclecheck")).args(["certify", "--out"]).arg(parent.join(out)).output().unwrap();
+        assert_eq!(o.status.code(), Some(2));
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(err.contains("--out") && err.contains(says), "{err}");
+        assert!(started.elapsed() < std::time::Duration::from_secs(5), "refused before running");
+    }
+    assert_eq!(std::fs::read(parent.join("precious/keep.txt")).unwrap(), b"keep");
+    assert_eq!(std::fs::read_dir(&parent).unwrap().count(), 2, "nothing staged");
+    std::fs::remove_dir_all(&parent).unwrap();
 }

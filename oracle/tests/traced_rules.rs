@@ -6,7 +6,7 @@ use cycle_vocab::text::Trace;
 use cycle_vocab::{Config, Event, MoveKind, PassKind, Rule};
 
 fn both(program: &str, config: &Config) -> [Trace; 2] {
-    let traces = [SpecEngine.expand(program.as_bytes(), config), ImplEngine::default().expand(program.as_bytes(), config)];
+    let traces = [SpecEngine.expand(program.as_bytes(), config), ImplEngine.expand(program.as_bytes(), config)];
     for t in &traces {
         assert_eq!(t.alarm, None, "{program}\n{}", t.to_gcode());
     }
@@ -29,6 +29,7 @@ fn infeed_points(t: &Trace, start: (i64, i64)) -> Vec<(PassKind, (i64, i64))> {
                 }
                 at = (m.x, m.z);
             }
+            Event::Dwell(_) | Event::Spindle(_) => {}
         }
     }
     out
@@ -85,4 +86,41 @@ fn g78_pullout_from_parameters_5130_5131() {
     };
     assert_eq!(pullout_length(10), 2_000, "5130 = 10 tenths of the 2 mm lead");
     assert_eq!(pullout_length(20), 4_000);
+}
+
+/// The thread moves of a G92 trace's single pass: the cut, and the pull-out when there is one.
+fn g92_thread_moves(program: &str) -> [Vec<(i64, i64)>; 2] {
+    both(program, &Config::default()).map(|t| t.moves().filter(|m| m.kind == MoveKind::Thread).map(|m| (m.x, m.z)).collect())
+}
+
+/// G92.JK.4: J = 0 (K omitted, or K = 0 too) — no pull-out: the cut runs straight to Z, one
+/// thread move, in both engines.
+#[test]
+fn g92_jk4_j_zero_means_no_pullout() {
+    for jk in ["J0", "J0 K0"] {
+        let program = format!("G0 X65 Z5\nG92 X58.7 Z-28 F3 {jk}\n");
+        for moves in g92_thread_moves(&program) {
+            assert_eq!(moves, [(58_700, -28_000)], "{jk}: a straight cut to the end, no pull-out");
+        }
+    }
+}
+
+/// G92.JK.6: J = 0 with K ≠ 0 — still no pull-out.
+#[test]
+fn g92_jk6_j_zero_k_nonzero_means_no_pullout() {
+    for moves in g92_thread_moves("G0 X65 Z5\nG92 X58.7 Z-28 F3 J0 K1\n") {
+        assert_eq!(moves, [(58_700, -28_000)]);
+    }
+}
+
+/// G92.JK.7: negative J and K are taken as positive — the same trace as J3 K1 — and the
+/// pull-out ends K before Z, J outward.
+#[test]
+fn g92_jk7_negative_j_and_k_are_taken_as_positive() {
+    let positive = g92_thread_moves("G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\n");
+    assert_eq!(positive[0], [(58_700, -27_000), (64_700, -28_000)]);
+    for jk in ["J-3 K-1", "J-3 K1", "J3 K-1"] {
+        let negative = g92_thread_moves(&format!("G0 X65 Z5\nG92 X58.7 Z-28 F3 {jk}\n"));
+        assert_eq!(negative, positive, "{jk}");
+    }
 }

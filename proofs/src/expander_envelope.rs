@@ -293,6 +293,9 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
                 ended = true;
                 break;
             }
+            Some(Ok(Event::Dwell(_) | Event::Spindle(_))) => {
+                check!(src, false, "PRJ.TRACE: no dwell or spindle event in these cycles");
+            }
             Some(Ok(Event::Pass(_))) => {
                 headers += 1;
                 events += 1;

@@ -140,6 +140,9 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
                 ended = true;
                 break;
             }
+            Some(Ok(Event::Dwell(_) | Event::Spindle(_))) => {
+                check!(src, false, "PRJ.TRACE: no dwell or spindle event in these cycles");
+            }
             Some(Ok(Event::Pass(p))) => {
                 check!(src, p.diameter_depth % 2 == 0, "pass depths are radius counts");
                 depth = p.diameter_depth / 2;

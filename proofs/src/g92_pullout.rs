@@ -180,6 +180,9 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
                 ended = true;
                 break;
             }
+            Some(Ok(Event::Dwell(_) | Event::Spindle(_))) => {
+                check!(src, false, "PRJ.TRACE: no dwell or spindle event in these cycles");
+            }
             Some(Ok(Event::Pass(p))) => {
                 check!(src, first_event && p.index == 1 && p.kind == PassKind::Rough && p.diameter_depth == 2 * depth, "G92 pass header: index 1, ROUGH, depth |A.x − C.x|");
             }

@@ -30,6 +30,10 @@ pub struct Params {
     pub p5133_rough_retract: i64,
     pub arc_tolerance: i64,
     pub nose_radius: i64,
+    pub p5135_escape_x: i64,
+    pub p5136_escape_z: i64,
+    pub p5137_count: i64,
+    pub p5139_peck_return: i64,
 }
 
 /// The defaults of docs/INTERPRETATION.md, "Parameters and defaults": No.19 one lead (G92.JK.1),
@@ -37,7 +41,8 @@ pub struct Params {
 /// 100 increments, 5142 one finishing pass, 5143 60° (G76.DEFAULTS), 5144 centre infeed (G78.MODE),
 /// 5145 degressive (G78.DEPTHMODE), 10 000 cuts (PRJ.MAXPASS), X as diameters (NC201.XMODE),
 /// 5132 a depth of cut of 1 000 and 5133 a retract of 500 increments (G71.PARAM), an arc end
-/// within 10 increments of its circle (ARC.TOL), no nose radius (TNRC.RADIUS).
+/// within 10 increments of its circle (ARC.TOL), no nose radius (TNRC.RADIUS), G73's Δi, Δk 0 and
+/// d 1 (G73.ESCAPE, G73.COUNT), no G74/G75 return (G74.E).
 pub const DEFAULTS: Params = Params {
     no19_pullout: 10,
     no107_pullout_speed: 0,
@@ -56,6 +61,10 @@ pub const DEFAULTS: Params = Params {
     p5133_rough_retract: 500,
     arc_tolerance: 10,
     nose_radius: 0,
+    p5135_escape_x: 0,
+    p5136_escape_z: 0,
+    p5137_count: 1,
+    p5139_peck_return: 0,
 };
 
 /// The parameters of `config`: each set value, else its default.
@@ -80,6 +89,10 @@ pub fn params(config: &Config) -> Params {
         p5133_rough_retract: set.p5133_rough_retract.unwrap_or(d.p5133_rough_retract),
         arc_tolerance: set.arc_tolerance.unwrap_or(d.arc_tolerance),
         nose_radius: set.nose_radius.unwrap_or(d.nose_radius),
+        p5135_escape_x: set.p5135_escape_x.unwrap_or(d.p5135_escape_x),
+        p5136_escape_z: set.p5136_escape_z.unwrap_or(d.p5136_escape_z),
+        p5137_count: set.p5137_count.unwrap_or(d.p5137_count),
+        p5139_peck_return: set.p5139_peck_return.unwrap_or(d.p5139_peck_return),
     }
 }
 
@@ -104,6 +117,10 @@ impl Params {
             p5133_rough_retract: Some(self.p5133_rough_retract),
             arc_tolerance: Some(self.arc_tolerance),
             nose_radius: Some(self.nose_radius),
+            p5135_escape_x: Some(self.p5135_escape_x),
+            p5136_escape_z: Some(self.p5136_escape_z),
+            p5137_count: Some(self.p5137_count),
+            p5139_peck_return: Some(self.p5139_peck_return),
         }
     }
 }
@@ -122,7 +139,8 @@ fn within(v: i64, lo: i64, hi: i64, word: Option<u8>, rule: Rule) -> Result<(), 
 /// (G76.DEFAULTS), 5144 (G78.MODE), 5145 (G78.DEPTHMODE), `max_passes` (PRJ.MAXPASS), under
 /// `fanuc` 5143 ∈ {80, 60, 55, 30, 29, 0} (F76.FORMAT), `x_radius` ≤ 1 (NC201.XMODE, every
 /// dialect), 5132 in 1…N and 5133 in 0…N (G71.PARAM), `arc_tolerance` in 0…N (ARC.TOL),
-/// `nose_radius` in 0…N (TNRC.RADIUS). An illegal value is `OUT OF RANGE` on line 0 (the configuration). No.107 is legal in
+/// `nose_radius` in 0…N (TNRC.RADIUS), 5135 and 5136 in −N…N (G73.ESCAPE), 5137 in 1…1 000 000
+/// (G73.COUNT), 5139 in 0…N (G74.E). An illegal value is `OUT OF RANGE` on line 0 (the configuration). No.107 is legal in
 /// any value up to 999 999; a value other than 0 is refused when a G92 cycle runs (G92.JK.8).
 pub fn check(config: &Config) -> Result<(), Alarm> {
     let p = params(config);
@@ -148,5 +166,9 @@ pub fn check(config: &Config) -> Result<(), Alarm> {
     within(p.p5133_rough_retract, 0, N, None, Rule::G71Param)?;
     within(p.arc_tolerance, 0, N, None, Rule::ArcTol)?;
     within(p.nose_radius, 0, N, None, Rule::TnrcRadius)?;
+    within(p.p5135_escape_x, -N, N, None, Rule::G73Escape)?;
+    within(p.p5136_escape_z, -N, N, None, Rule::G73Escape)?;
+    within(p.p5137_count, 1, 1_000_000, None, Rule::G73Count)?;
+    within(p.p5139_peck_return, 0, N, None, Rule::G74E)?;
     Ok(())
 }

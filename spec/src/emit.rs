@@ -1,11 +1,20 @@
 //! The trace being built (PRJ.TRACE) and the machine position it implies (PRJ.MODAL).
+//!
+//! Each event goes to a sink as it is emitted ([`crate::expand_into`]); [`crate::expand`]
+//! collects them. A sink that answers `Break` gets no further event: the rest of the block is
+//! still computed (the position stays right), and the program stops after that block.
 
+use core::ops::ControlFlow;
 use cycle_vocab::{Alarm, AlarmCode, Event, Move, MoveKind, Pass, PassKind, Rule};
 
-/// Events emitted so far and the current position (X diameter, Z, increments).
-#[derive(Debug)]
-pub struct Out {
-    pub events: Vec<Event>,
+/// Where emitted events go.
+pub type Sink<'s> = &'s mut dyn FnMut(Event) -> ControlFlow<()>;
+
+/// The sink of emitted events and the current position (X diameter, Z, increments).
+pub struct Out<'s> {
+    sink: Sink<'s>,
+    /// The sink answered `Break`: later events are dropped.
+    stopped: bool,
     pub x: i64,
     pub z: i64,
 }
@@ -16,15 +25,27 @@ fn coordinate(v: i128, word: u8, line: u32) -> Result<i64, Alarm> {
     i64::try_from(v).map_err(|_| Alarm::new(AlarmCode::OutOfRange, Some(word), Rule::ComRanges, line))
 }
 
-impl Out {
-    pub fn new(x: i64, z: i64) -> Out {
-        Out { events: Vec::new(), x, z }
+impl<'s> Out<'s> {
+    pub fn new(x: i64, z: i64, sink: Sink<'s>) -> Out<'s> {
+        Out { sink, stopped: false, x, z }
+    }
+
+    /// Whether the sink asked to stop.
+    pub fn stopped(&self) -> bool {
+        self.stopped
+    }
+
+    /// PRJ.TRACE: hands `event` to the sink, unless it asked to stop.
+    fn emit(&mut self, event: Event) {
+        if !self.stopped && (self.sink)(event).is_break() {
+            self.stopped = true;
+        }
     }
 
     /// PRJ.TRACE (PRJ): a pass header; `diameter_depth` is twice the radius depth.
     pub fn pass(&mut self, index: u32, kind: PassKind, diameter_depth: i128, rule: Rule, line: u32) -> Result<(), Alarm> {
         let diameter_depth = coordinate(diameter_depth, b'X', line)?;
-        self.events.push(Event::Pass(Pass { index, kind, diameter_depth, rule }));
+        self.emit(Event::Pass(Pass { index, kind, diameter_depth, rule }));
         Ok(())
     }
 
@@ -44,7 +65,7 @@ impl Out {
         if m.x == self.x && m.z == self.z {
             return;
         }
-        self.events.push(Event::Move(m));
+        self.emit(Event::Move(m));
         self.x = m.x;
         self.z = m.z;
     }
@@ -57,6 +78,16 @@ impl Out {
     /// A linear feed (`G01`) to (x, z) at `feed` lead counts.
     pub fn feed(&mut self, x: i128, z: i128, feed: i64, rule: Rule, line: u32) -> Result<(), Alarm> {
         self.go(MoveKind::Feed, x, z, feed, 0, rule, line)
+    }
+
+    /// An arc at `feed` to `end` about `centre` (ARC.DIR: clockwise for G02, else G03), both
+    /// absolute, X on diameter. Its start is the current position; it is never a no-op (a
+    /// full circle is an alarm, ARC.TOL).
+    pub fn arc(&mut self, cw: bool, end: (i128, i128), centre: (i128, i128), feed: i64, rule: Rule, line: u32) -> Result<(), Alarm> {
+        let (x, z) = (coordinate(end.0, b'X', line)?, coordinate(end.1, b'Z', line)?);
+        let (cx, cz) = (coordinate(centre.0, b'X', line)?, coordinate(centre.1, b'Z', line)?);
+        self.push(Move::arc(cw, x, z, cx, cz, feed, rule));
+        Ok(())
     }
 
     /// A spindle-synchronized move (`G32`) with `lead` and start `angle` (0.001°).
@@ -74,7 +105,7 @@ pub struct LeadLaw {
     pub floor: i64,
 }
 
-impl Out {
+impl Out<'_> {
     /// A spindle-synchronized move whose lead starts at `lead` and follows `law`.
     #[allow(clippy::too_many_arguments)]
     pub fn variable_thread(&mut self, x: i128, z: i128, lead: i64, angle: u32, law: LeadLaw, rule: Rule, line: u32) -> Result<(), Alarm> {
@@ -106,10 +137,29 @@ mod tests {
 
     #[test]
     fn noop_moves_are_dropped() {
-        let mut o = Out::new(10, 20);
+        let mut events = Vec::new();
+        let mut sink = |e| {
+            events.push(e);
+            ControlFlow::Continue(())
+        };
+        let mut o = Out::new(10, 20, &mut sink);
         o.rapid(10, 20, Rule::PrjModal, 1).unwrap();
-        assert!(o.events.is_empty());
         o.rapid(11, 20, Rule::PrjModal, 1).unwrap();
-        assert_eq!(o.events.len(), 1);
+        assert_eq!(events.len(), 1);
+    }
+
+    #[test]
+    fn a_sink_that_breaks_gets_no_more_events_while_the_position_moves_on() {
+        let mut seen = 0;
+        let mut sink = |_| {
+            seen += 1;
+            ControlFlow::Break(())
+        };
+        let mut o = Out::new(0, 0, &mut sink);
+        o.rapid(1, 0, Rule::PrjModal, 1).unwrap();
+        o.rapid(2, 0, Rule::PrjModal, 1).unwrap();
+        assert!(o.stopped());
+        assert_eq!((o.x, o.z), (2, 0));
+        assert_eq!(seen, 1);
     }
 }

@@ -8,8 +8,9 @@
 
 use crate::config::{params, Params};
 use crate::emit::Out;
+use crate::lex::{Block, Blocks};
 use crate::words::Read;
-use cycle_vocab::{Config, Dialect, Rule};
+use cycle_vocab::{Alarm, Config, Dialect, Rule};
 
 /// A G code of a family and the dialects that have it; under any other dialect it is
 /// `UNSUPPORTED CODE`, rule PRJ.DIALECT.
@@ -59,6 +60,8 @@ pub struct Kind {
     pub g: u32,
     /// Whether the block has an axis word X, U, Z or W.
     pub axes: bool,
+    /// Whether the block has a P or a Q word (G71.UW: the second block of G71, G72).
+    pub pq: bool,
 }
 
 /// What the handler of a block receives besides the machine state.
@@ -83,7 +86,42 @@ pub trait Family {
     /// The words a block of this kind accepts under `dialect` (PRJ.WORD, check steps 2 and 3).
     fn words(&self, kind: Kind, dialect: Dialect) -> Words;
     /// Executes a block whose words are allowed and read (check steps 4 and 5, then the moves).
-    fn execute(&mut self, st: &mut State, b: &BlockIn) -> Result<(), cycle_vocab::Alarm>;
+    /// `src` is the program around the block: the contour cycles read their contour from it
+    /// (CNT.FIND); every other family ignores it.
+    fn execute(&mut self, st: &mut State, b: &BlockIn, src: &mut Source) -> Result<(), Alarm>;
+}
+
+/// The program being expanded, as the interpreter reads it (CNT.FIND, CNT.FLOW): the stream of
+/// blocks still to come, and the whole text, which can be read again from its start. Nothing is
+/// collected: a cycle that needs the blocks before it lexes the text again.
+pub struct Source<'p> {
+    text: &'p [u8],
+    blocks: Blocks<'p>,
+    /// How many blocks have been handed out; the block being executed is the last of them.
+    taken: u64,
+}
+
+impl<'p> Source<'p> {
+    pub fn new(text: &'p [u8]) -> Source<'p> {
+        Source { text, blocks: Blocks::new(text), taken: 0 }
+    }
+
+    /// The next block of the program (PRJ.LEX); `None` at its end or after a lexing alarm.
+    /// Blocks a cycle takes from here (its contour) are not read again by the interpreter.
+    pub fn next_block(&mut self) -> Option<Result<Block, Alarm>> {
+        let next = self.blocks.next();
+        if matches!(next, Some(Ok(_))) {
+            self.taken = self.taken.saturating_add(1);
+        }
+        next
+    }
+
+    /// The blocks that stand before the last one handed out, in program order, read again from
+    /// the start of the text. They were read once without an alarm, so they read again alike.
+    pub fn before(&self) -> impl Iterator<Item = Block> + 'p {
+        let n = usize::try_from(self.taken.saturating_sub(1)).unwrap_or(usize::MAX);
+        Blocks::new(self.text).take(n).map_while(Result::ok)
+    }
 }
 
 /// The spec's families, in no particular order (each G code belongs to one).
@@ -95,6 +133,10 @@ pub fn table() -> Vec<Box<dyn Family>> {
         Box::new(crate::g162::unit::G162),
         Box::new(crate::g90::G90::default()),
         Box::new(crate::g94::G94::default()),
+        Box::new(crate::g50::G50),
+        Box::new(crate::g70::G70),
+        Box::new(crate::g71::G71::default()),
+        Box::new(crate::g72::G72::default()),
     ]
 }
 
@@ -120,11 +162,13 @@ impl Values {
 /// The machine state a family works on (PRJ.MODAL): the trace and position, the modal feed.
 pub struct State<'c> {
     pub config: &'c Config,
-    pub out: Out,
+    pub out: Out<'c>,
     /// The one modal feed / lead value, lead counts (COM.LEAD).
     pub feed: Option<i64>,
     /// NC201.ABSINC: G91 (X and Z are distances from the position before the block).
     pub incremental: bool,
+    /// TNRC.CODES: the nose-radius compensation in force.
+    pub side: crate::tnrc::Side,
 }
 
 impl State<'_> {

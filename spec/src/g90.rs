@@ -7,7 +7,7 @@
 //! `corpus/g90_example.nc`, read as docs/INTERPRETATION.md, "G90 and G94", says.
 
 use crate::emit::Out;
-use crate::family::{BlockIn, Code, Family, Kind, State, Words, GSK_FANUC};
+use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
 use crate::single_cut::{taper_ok, Cut, Run};
 use crate::words::{alarm, Read, F, N, U, W, X, Z};
 use cycle_vocab::{Alarm, AlarmCode, Dialect, PassKind, Rule};
@@ -35,7 +35,7 @@ impl Family for G90 {
     fn words(&self, _: Kind, _: Dialect) -> Words {
         WORDS
     }
-    fn execute(&mut self, st: &mut State, b: &BlockIn) -> Result<(), Alarm> {
+    fn execute(&mut self, st: &mut State, b: &BlockIn, _: &mut Source) -> Result<(), Alarm> {
         match self.run.block(st, b, b'I')? {
             Some(cut) => expand(&cut, &mut st.out),
             None => Ok(()),

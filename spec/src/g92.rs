@@ -8,7 +8,7 @@
 use crate::config::Params;
 use crate::emit::{start_angle, Out};
 use crate::exact::round_div;
-use crate::family::{BlockIn, Code, Family, Kind, State, Words, GSK_FANUC};
+use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
 use crate::pullout::{self, Amounts, ThreadLine};
 use crate::words::{alarm, Read, F, I_TPI, JK_MAX, N, U, W, X, Z};
 use cycle_vocab::{Alarm, AlarmCode, Dialect, Grid, PassKind, Rule};
@@ -65,7 +65,7 @@ impl Family for G92 {
     /// one cycle; end X, end Z and R are kept within the run, F/I, J, K, L for the whole
     /// program. A new run starts with R = 0 and the end point at the current position. A block
     /// without axis words does not cut.
-    fn execute(&mut self, st: &mut State, b: &BlockIn) -> Result<(), Alarm> {
+    fn execute(&mut self, st: &mut State, b: &BlockIn, _: &mut Source) -> Result<(), Alarm> {
         let (v, line) = (b.values, b.line);
         if b.new_run {
             self.run = Run::default();

@@ -1,6 +1,6 @@
 //! Executable reference spec of the lathe canned cycles: the thread cycles G92 (M002), G76
-//! (M001, M003 FANUC-style), G78 (M000) and G162 (M004), the thread moves G32, G33, G34 and the
-//! single cutting cycles G90, G94 (M003).
+//! (M001, M003 FANUC-style), G78 (M000) and G162 (M004), the thread moves G32, G33, G34, the
+//! single cutting cycles G90, G94, arcs G02/G03 and the contour cycles G70, G71, G72 (M003).
 //!
 //! A certification reference: clarity first, exact integer arithmetic, each rule a small
 //! function whose doc comment names its rule ID (`docs/RULES.md`) and source manual key. Every
@@ -20,14 +20,25 @@
 //! | [`g162`] | G162.* (M004, `nc201`), NC201.* in [`program`] |
 //! | [`thread_moves`] | G32, G33, G34 (M003) |
 //! | [`g90`], [`g94`], [`single_cut`] | G90.*, G94.* (M003): single cutting cycles and their runs |
+//! | [`g50`], [`tnrc`] | G50.COORD, G50.SMAX; TNRC.* (M003): the program words of the contour cycles |
+//! | [`arc`] | ARC.* (M003): G02/G03, their centres, the tolerance, the sweep |
+//! | [`contour`] | CNT.* (M003): finding, checking and running the contour N(ns) … N(nf) |
+//! | [`g70`] | G70.* (M003): finishing |
+//! | [`g71`], [`g72`], [`stock_removal`] | G71.*, G72.* (M003): stock removal in layers |
 //! | [`emit`] | PRJ.TRACE, PRJ.NOOP, COM.MULTISTART |
 #![forbid(unsafe_code)]
 
+pub mod arc;
 pub mod config;
+pub mod contour;
 pub mod emit;
 pub mod exact;
 pub mod family;
 pub mod g162;
+pub mod g50;
+pub mod g70;
+pub mod g71;
+pub mod g72;
 pub mod g90;
 pub mod g94;
 pub mod g92;
@@ -36,44 +47,68 @@ pub mod multipass;
 pub mod program;
 pub mod pullout;
 pub mod single_cut;
+pub mod stock_removal;
 pub mod tangent;
 pub mod thread_moves;
+pub mod tnrc;
 pub mod words;
 
+use core::ops::ControlFlow;
 use cycle_vocab::text::Trace;
-use cycle_vocab::Config;
+use cycle_vocab::{Alarm, Config, Event};
 
 /// Expands a whole program into its trace. Stops at the first alarm, keeping the events emitted
 /// before it. Never panics; resource use is bounded by the program length and `max_passes`
 /// (PRJ.MAXPASS, checked before any motion of a cycle).
 pub fn expand(program: &[u8], config: &Config) -> Trace {
-    let mut machine = program::Machine::new(config);
+    let mut events = Vec::new();
+    let alarm = expand_into(program, config, &mut |e| {
+        events.push(e);
+        ControlFlow::Continue(())
+    });
+    Trace { grid: config.grid, events, alarm }
+}
+
+/// Expands a program event by event: each event of the trace goes to `sink` as it is
+/// emitted, and the alarm that ends the trace, if any, is returned. Nothing is collected, so
+/// memory does not grow with the trace. When `sink` answers `Break` it gets no further event
+/// and the expansion stops after the block it is in (the result is then `None`, unless that
+/// block itself ended in an alarm).
+pub fn expand_into(program: &[u8], config: &Config, sink: &mut dyn FnMut(Event) -> ControlFlow<()>) -> Option<Alarm> {
     if let Err(a) = config::check(config) {
-        return Trace { grid: config.grid, events: Vec::new(), alarm: Some(a) };
+        return Some(a);
     }
-    let mut alarm = None;
-    for block in lex::blocks(program) {
+    let mut machine = program::Machine::new(config, sink);
+    let mut src = family::Source::new(program);
+    while let Some(block) = src.next_block() {
         let result = match block {
-            Ok(b) => machine.block(&b),
+            Ok(b) => machine.block(&b, &mut src),
             Err(a) => Err(a),
         };
         match result {
-            Ok(false) => {}
-            Ok(true) => break, // M02 / M30: nothing after this block is read
-            Err(a) => {
-                alarm = Some(a);
-                break;
-            }
+            Ok(false) if !machine.stopped() => {}
+            Ok(_) => break, // M02 / M30: nothing after this block is read; or the sink stopped
+            Err(a) => return Some(a),
         }
     }
-    Trace { grid: config.grid, events: machine.out().events, alarm }
+    None
 }
 
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
+mod tests_arc;
+#[cfg(test)]
+mod tests_contour;
+#[cfg(test)]
 mod tests_g162;
+#[cfg(test)]
+mod tests_g71;
 #[cfg(test)]
 mod tests_g90;
 #[cfg(test)]
 mod tests_lex;
+#[cfg(test)]
+mod tests_m003_words;
+#[cfg(test)]
+mod tests_props;

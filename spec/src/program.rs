@@ -12,9 +12,10 @@
 //! alphabetical order; (3) each word's value in alphabetical order; (4) missing words and
 //! (5) the cycle's own checks, in the family's handler.
 
-use crate::emit::Out;
-use crate::family::{self, BlockIn, Family, Kind, State, Values, Words};
+use crate::emit::{Out, Sink};
+use crate::family::{self, BlockIn, Family, Kind, Source, State, Values, Words};
 use crate::lex::{Block, Number};
+use crate::tnrc::{self, Side};
 use crate::words::{alarm, Read, F, U, W, X, Z};
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Rule, Units};
 
@@ -23,6 +24,8 @@ use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Rule, Units};
 enum Motion {
     G00,
     G01,
+    /// G02 (clockwise) or G03: ARC.DIR.
+    Arc { cw: bool },
     /// A modal family's code: the family's index in the table and the code.
     Family(usize, u32),
 }
@@ -32,6 +35,8 @@ enum Motion {
 enum Code {
     G00,
     G01,
+    /// G02 (clockwise) or G03.
+    Arc { cw: bool },
     /// A family's code: the family's index in the table and the code.
     Family(usize, u32),
 }
@@ -54,23 +59,28 @@ const LINEAR_NC201: Words = Words::of(&[F, X, Z]);
 
 impl<'c> Machine<'c> {
     /// PRJ.MODAL (PRJ): the machine starts at the configured start point, in G00, with no feed.
-    pub fn new(config: &'c Config) -> Machine<'c> {
-        let st = State { config, out: Out::new(config.start_x, config.start_z), feed: None, incremental: false };
+    pub fn new(config: &'c Config, sink: Sink<'c>) -> Machine<'c> {
+        let out = Out::new(config.start_x, config.start_z, sink);
+        let st = State { config, out, feed: None, incremental: false, side: Side::Off };
         Machine { st, motion: Motion::G00, families: family::table() }
     }
 
-    /// The trace built so far.
-    pub fn out(self) -> Out {
-        self.st.out
+    /// Whether the sink of the trace asked to stop (PRJ.TRACE).
+    pub fn stopped(&self) -> bool {
+        self.st.out.stopped()
     }
 
-    /// Executes one block. `Ok(true)` when the block ends the program (M02, M30).
-    pub fn block(&mut self, b: &Block) -> Result<bool, Alarm> {
+    /// Executes one block; `src` is the program around it (the contour cycles read from it).
+    /// `Ok(true)` when the block ends the program (M02, M30).
+    pub fn block(&mut self, b: &Block, src: &mut Source) -> Result<bool, Alarm> {
         let dialect = self.st.config.dialect;
         let (codes, end) = self.codes(b)?;
         // The block's kind: its written code, else the modal motion mode.
         let code = codes.first().copied().unwrap_or(self.modal_code());
-        conflicts(b, dialect, codes.len(), self.thread_block(code))?;
+        two_motion_codes(b, dialect, codes.len())?;
+        let writes_arc = codes.iter().any(|c| matches!(c, Code::Arc { .. }));
+        self.st.side = tnrc::check(b, writes_arc, self.st.side, self.st.params().nose_radius)?;
+        conflicts(b, dialect, self.thread_block(code), matches!(code, Code::Arc { .. }))?;
         let words = self.words(b, code);
         words_allowed(b, &words)?;
         let values = self.values(b, &words)?;
@@ -82,11 +92,15 @@ impl<'c> Machine<'c> {
                 if family.modal() {
                     self.motion = Motion::Family(index, g);
                 }
-                let kind = Kind { g, axes: has_axis(b) };
-                family.execute(&mut self.st, &BlockIn { kind, new_run, values: &values, line: b.line })?;
+                let kind = kind_of(b, g);
+                family.execute(&mut self.st, &BlockIn { kind, new_run, values: &values, line: b.line }, src)?;
             }
             Code::G01 => self.linear(b, true, &values)?,
             Code::G00 => self.linear(b, false, &values)?,
+            Code::Arc { cw } => {
+                self.motion = Motion::Arc { cw };
+                crate::arc::block(&mut self.st, &values, cw, has_axis(b), b.line)?;
+            }
         }
         Ok(end)
     }
@@ -96,6 +110,7 @@ impl<'c> Machine<'c> {
         match self.motion {
             Motion::G00 => Code::G00,
             Motion::G01 => Code::G01,
+            Motion::Arc { cw } => Code::Arc { cw },
             Motion::Family(index, g) => Code::Family(index, g),
         }
     }
@@ -125,12 +140,20 @@ impl<'c> Machine<'c> {
             let code = match g {
                 0 => Some(Code::G00),
                 1 => Some(Code::G01),
+                // ARC.FORMAT (M003): arcs are codes of `gsk` and `fanuc`.
+                2 | 3 if nc201 => return Err(alarm(AlarmCode::UnsupportedCode, b'G', Rule::PrjDialect, line)),
+                2 | 3 => Some(Code::Arc { cw: g == 2 }),
                 90 | 91 if nc201 => None,
                 g => match self.family_of(g) {
                     Some((index, c)) if c.dialects.contains(&config.dialect) => Some(Code::Family(index, c.g)),
                     Some(_) => return Err(alarm(AlarmCode::UnsupportedCode, b'G', Rule::PrjDialect, line)),
                     None => match g {
                         18 | 40 | 97 | 99 => None,
+                        // G50.SMAX, TNRC.CODES (M003): no-motion codes of `gsk` and `fanuc`.
+                        41 | 42 | 96 | 98 if nc201 => {
+                            return Err(alarm(AlarmCode::UnsupportedCode, b'G', Rule::PrjDialect, line));
+                        }
+                        41 | 42 | 96 | 98 => None,
                         20 | 21 => {
                             // COM.UNITS: the grid of a trace is fixed for the whole program.
                             let wanted = if g == 20 { Units::Inch } else { Units::Metric };
@@ -163,7 +186,7 @@ impl<'c> Machine<'c> {
     fn thread_block(&self, code: Code) -> bool {
         match code {
             Code::Family(index, _) => self.families[index].thread(),
-            Code::G00 | Code::G01 => false,
+            Code::G00 | Code::G01 | Code::Arc { .. } => false,
         }
     }
 
@@ -171,7 +194,8 @@ impl<'c> Machine<'c> {
     fn words(&self, b: &Block, code: Code) -> Words {
         let dialect = self.st.config.dialect;
         match code {
-            Code::Family(index, g) => self.families[index].words(Kind { g, axes: has_axis(b) }, dialect),
+            Code::Family(index, g) => self.families[index].words(kind_of(b, g), dialect),
+            Code::Arc { .. } => crate::arc::WORDS,
             _ if dialect == Dialect::Nc201 => LINEAR_NC201,
             _ => LINEAR,
         }
@@ -241,6 +265,11 @@ fn words_allowed(b: &Block, words: &Words) -> Result<(), Alarm> {
     Ok(())
 }
 
+/// The kind of a family's block: its code, whether it has axis words, and whether P or Q.
+fn kind_of(b: &Block, g: u32) -> Kind {
+    Kind { g, axes: has_axis(b), pq: b.has(b'P') || b.has(b'Q') }
+}
+
 /// Whether the block has an axis word X, U, Z or W.
 fn has_axis(b: &Block) -> bool {
     b.has(b'X') || b.has(b'U') || b.has(b'Z') || b.has(b'W')
@@ -248,7 +277,7 @@ fn has_axis(b: &Block) -> bool {
 
 /// PRJ.SUPPORTED: the value of a G or M code, `None` when it has a decimal point or a sign (no
 /// code) or more digits than any code.
-fn code_value(n: &Number) -> Option<u64> {
+pub fn code_value(n: &Number) -> Option<u64> {
     if n.point || n.negative {
         return None;
     }
@@ -258,11 +287,9 @@ fn code_value(n: &Number) -> Option<u64> {
     n.digits.parse().ok()
 }
 
-/// PRJ.WORD (PRJ), NC201.ABSINC (M004), COM.ABSINC, COM.LEAD (M001, M002): two motion codes;
-/// two of G90/G91; X with U; Z with W; F with I in a thread block (G92, G76, G78, G32, G33,
-/// G34, written or modal), where I is threads per inch. Under `nc201` U, W and I are no
-/// incremental or lead addresses, so the three pair conflicts do not exist there.
-fn conflicts(b: &Block, dialect: Dialect, motion_codes: usize, thread: bool) -> Result<(), Alarm> {
+/// PRJ.WORD (PRJ): two motion/cycle codes in one block are a `CONFLICT` on G; under `nc201`
+/// (NC201.ABSINC, M004) so are two of G90/G91, checked right after.
+fn two_motion_codes(b: &Block, dialect: Dialect, motion_codes: usize) -> Result<(), Alarm> {
     let line = b.line;
     if motion_codes > 1 {
         return Err(alarm(AlarmCode::Conflict, b'G', Rule::PrjWord, line));
@@ -272,6 +299,17 @@ fn conflicts(b: &Block, dialect: Dialect, motion_codes: usize, thread: bool) -> 
         if absinc > 1 {
             return Err(alarm(AlarmCode::Conflict, b'G', Rule::Nc201AbsInc, line));
         }
+    }
+    Ok(())
+}
+
+/// COM.ABSINC, COM.LEAD (M001, M002), ARC.FORMAT (M003): X with U; Z with W; in an arc block
+/// (G02/G03, written or modal) R with I or K (`CONFLICT` on R); F with I in a thread block
+/// (G92, G76, G78, G32, G33, G34, written or modal), where I is threads per inch. Under `nc201`
+/// U, W and I are no incremental or lead addresses, so the pair conflicts do not exist there.
+fn conflicts(b: &Block, dialect: Dialect, thread: bool, arc: bool) -> Result<(), Alarm> {
+    let line = b.line;
+    if dialect == Dialect::Nc201 {
         return Ok(());
     }
     if b.has(b'X') && b.has(b'U') {
@@ -279,6 +317,9 @@ fn conflicts(b: &Block, dialect: Dialect, motion_codes: usize, thread: bool) -> 
     }
     if b.has(b'Z') && b.has(b'W') {
         return Err(alarm(AlarmCode::Conflict, b'W', Rule::ComAbsInc, line));
+    }
+    if arc && b.has(b'R') && (b.has(b'I') || b.has(b'K')) {
+        return Err(alarm(AlarmCode::Conflict, b'R', Rule::ArcFormat, line));
     }
     if thread && b.has(b'F') && b.has(b'I') {
         return Err(alarm(AlarmCode::Conflict, b'I', Rule::ComLead, line));

@@ -17,7 +17,7 @@ fn passes(t: &Trace) -> Vec<(u32, PassKind, i64, Rule)> {
         .iter()
         .filter_map(|e| match e {
             Event::Pass(p) => Some((p.index, p.kind, p.diameter_depth, p.rule)),
-            Event::Move(_) => None,
+            _ => None,
         })
         .collect()
 }
@@ -179,7 +179,7 @@ fn alarms() {
     assert_eq!(range.alarm, Some(Alarm::new(AlarmCode::OutOfRange, Some(b'X'), Rule::ComRanges, 1)));
     let precision = run("G0 X58.7001\n");
     assert_eq!(precision.alarm, Some(Alarm::new(AlarmCode::Precision, Some(b'X'), Rule::ComUnits, 1)));
-    let g = run("G0 X1\nG2 X5\n");
+    let g = run("G0 X1\nG73 X5\n");
     assert_eq!(g.alarm, Some(Alarm::new(AlarmCode::UnsupportedCode, Some(b'G'), Rule::PrjSupported, 2)));
     assert_eq!(g.events.len(), 1);
     let conflict = run("G0 G1 X1\n");

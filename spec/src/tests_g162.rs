@@ -19,7 +19,7 @@ fn depths(t: &Trace) -> Vec<i64> {
         .iter()
         .filter_map(|e| match e {
             Event::Pass(p) => Some(p.diameter_depth / 2),
-            Event::Move(_) => None,
+            _ => None,
         })
         .collect()
 }

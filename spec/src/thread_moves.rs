@@ -6,7 +6,7 @@
 //! 5) and emits it (docs/INTERPRETATION.md, "G32, G33, G34").
 
 use crate::emit::{LeadLaw, Out};
-use crate::family::{BlockIn, Code, Family, Kind, State, Words, GSK_FANUC};
+use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
 use crate::g162::long_travel_twice;
 use crate::words::{alarm, lead_max, Read, F, I_TPI, U, W, X, Z};
 use cycle_vocab::{Alarm, AlarmCode, Dialect, Grid, Rule};
@@ -45,7 +45,7 @@ impl Family for ThreadMoves {
     /// G32, G33, G34 (M003): the lead is the modal feed (`MISSING WORD F`, COM.LEAD, in a block
     /// that moves), G34 needs its K (`MISSING WORD K`, G34). A block without axis words moves
     /// nothing.
-    fn execute(&mut self, st: &mut State, b: &BlockIn) -> Result<(), Alarm> {
+    fn execute(&mut self, st: &mut State, b: &BlockIn, _: &mut Source) -> Result<(), Alarm> {
         let (v, line) = (b.values, b.line);
         let code = match b.kind.g {
             33 => ThreadCode::G33,

@@ -147,6 +147,8 @@ pub fn half_degrees(n: &Number, word: u8, line: u32) -> Result<i64, Alarm> {
 pub enum Read {
     /// A length on the grid in `lo…hi` increments (COM.UNITS, COM.RANGES).
     Length { lo: i64, hi: i64 },
+    /// A length on the grid in `lo…hi` increments whose range a cycle rule owns (G71.DEPTH).
+    RuledLength { lo: i64, hi: i64, rule: Rule },
     /// A signed length in X units, |v| ≤ N: a diameter, or under `nc201` with `x_radius` = 1 a
     /// radius counted twice (NC201.XMODE).
     XLength,
@@ -176,6 +178,10 @@ impl Read {
         let grid = config.grid;
         match self {
             Read::Length { lo, hi } => length(n, letter, grid, lo, hi, line),
+            Read::RuledLength { lo, hi, rule } => {
+                let v = count(n, grid.decimals(), letter, line)?;
+                in_range(&v, lo, hi, letter, rule, line)
+            }
             Read::XLength => length(n, letter, grid, -N, N, line).map(|v| x_units(v, config)),
             Read::Microns { lo, hi } => micron_length(n, letter, config, lo, hi, line),
             Read::Lead => lead_from_f(n, grid, line),

@@ -1,7 +1,9 @@
 //! Performance of the production expander (issue: performance, measured against the limit).
 //!
 //! The cases: each registry family's bench case (`cycle_oracle::registry`) at 1, 100 and 9 900
-//! passes (thread blocks for G32), and two G76 extremes.
+//! passes (thread blocks for G32), two G76 extremes, and G71 per layer: contours of 10, 100 and
+//! 1 000 elements roughed in 10, 1 000 and 10 000 layers (`g71/<layers>_layers_<n>_elements`;
+//! the table adds the production expander's time per layer to the case's name).
 //!
 //! For each case, four measurements over the same trace, all reported as events per second
 //! (criterion throughput in elements = events):
@@ -16,7 +18,8 @@
 //! After criterion's own output, a table prints each case's figures as ratios (impl / baseline,
 //! impl / spec), the time per event and the time to the cycle's first move (latency), the five
 //! measurements of a case taken in turn over 15 rounds, each the least time (see [`table`]). The README's table is
-//! copied from that output.
+//! copied from that output. `cargo bench -p cycle-tests --bench expand -- no_such_bench` runs no
+//! criterion benchmark (the filter matches none) and prints only the table.
 
 use criterion::{black_box, BenchmarkId, Criterion, Throughput};
 use cycle_impl::Expander;
@@ -29,6 +32,8 @@ struct Case {
     name: String,
     program: String,
     config: Config,
+    /// The layers of a per-layer case (the table reports the time per layer).
+    layers: Option<usize>,
 }
 
 /// G76 with a minimum cut that is never reached (Δd = 0.2, Δdmin = 0.001: the switch of
@@ -38,7 +43,7 @@ struct Case {
 /// single-start cycle.
 fn g76_min_cut_unreached() -> Case {
     let p = "G0 X80 Z5\nG76 P011060 Q0.001 R0.1\nG76 X27.4 Z-20 P20.0 Q0.2 F2\n";
-    Case { name: "g76/9900_min_cut_unreached".into(), program: p.into(), config: Config::default() }
+    Case { name: "g76/9900_min_cut_unreached".into(), program: p.into(), config: Config::default(), layers: None }
 }
 
 /// The hardest legal inputs: the largest lengths of the grid, multi-start, a Δd = Δdmin tie,
@@ -46,20 +51,28 @@ fn g76_min_cut_unreached() -> Case {
 fn extreme() -> Case {
     let p = "G0 X999999.999 Z999999.999\nG76 P996060 Q0.5 R0.5 L7\n\
              G76 X-999999.999 Z-999999.999 R-1000 P600 Q0.5 F9999\n";
-    Case { name: "g76/extreme_ranges".into(), program: p.into(), config: Config::default() }
+    Case { name: "g76/extreme_ranges".into(), program: p.into(), config: Config::default(), layers: None }
 }
 
-/// Each registry family's bench case at each size (`g92/100`, `g76/9900`, …), then the extremes.
+/// Each registry family's bench case at each size (`g92/100`, `g76/9900`, …), then the extremes,
+/// then G71 per layer.
 fn cases() -> Vec<Case> {
     let mut v = Vec::new();
     for family in FAMILIES {
         for n in BENCH_SIZES {
             let case = (family.bench)(n);
-            v.push(Case { name: format!("{}/{n}", family.name), program: case.text(), config: case.config });
+            v.push(Case { name: format!("{}/{n}", family.name), program: case.text(), config: case.config, layers: None });
         }
     }
     v.push(g76_min_cut_unreached());
     v.push(extreme());
+    for elements in [10, 100, 1_000] {
+        for layers in [10, 1_000, 10_000] {
+            let case = cycle_oracle::gen::contour::layers_bench(false, layers, elements);
+            let name = format!("g71/{layers}_layers_{elements}_elements");
+            v.push(Case { name, program: case.text(), config: case.config, layers: Some(layers) });
+        }
+    }
     v
 }
 
@@ -108,7 +121,7 @@ fn first_cycle_move(case: &Case) -> Option<Event> {
         match item {
             Ok(Event::Pass(_)) => in_cycle = true,
             Ok(e @ Event::Move(m)) if in_cycle || m.kind == MoveKind::Thread => return Some(e),
-            Ok(Event::Move(_)) => {}
+            Ok(Event::Move(_) | Event::Dwell(_) | Event::Spindle(_)) => {}
             Err(_) => return None,
         }
     }
@@ -209,9 +222,13 @@ fn table(cases: &[Case]) {
         assert_eq!(filled, events, "bench case {}: fill wrote other events", case.name);
         let [base, imp, iter, spec, first] = [0, 1, 2, 3, 4].map(|i| least(&ns[i]));
         let rate = |ns: f64| n / ns * 1e3; // events per ns → M events per s
+        let name = match case.layers {
+            Some(layers) => format!("{} ({:.1} ns/layer)", case.name, imp / layers as f64),
+            None => case.name.clone(),
+        };
         println!(
             "| {} | {} | {:.1} | {:.1} | {:.1} | {:.2} | {:.2} | {:.2} | {:.2} | {:.1} | {:.0} |",
-            case.name,
+            name,
             events.len(),
             rate(imp),
             rate(iter),

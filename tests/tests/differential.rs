@@ -37,7 +37,7 @@ fn seed() -> [u8; 32] {
 /// program.
 fn conforms(case: &Case) -> Result<(), TestCaseError> {
     let reference = SpecEngine.expand(&case.program, &case.config);
-    let candidate = ImplEngine::default().expand(&case.program, &case.config);
+    let candidate = ImplEngine.expand(&case.program, &case.config);
     conformance::check(&reference, &candidate).map_err(|d| {
         TestCaseError::fail(format!(
             "{d}\n\nprogram ({} family; {:?}, {:?}, start X{} Z{}, {:?}):\n{}",
@@ -78,7 +78,7 @@ macro_rules! family_campaigns {
     )*};
 }
 
-family_campaigns!(g92, g76, g78, f76, g162, g32, g90, g94);
+family_campaigns!(g92, g76, g78, f76, g162, g32, g90, g94, g71, g72, g70);
 
 /// The campaign of the registry family `name`.
 fn family_campaign(name: &str) {
@@ -94,7 +94,7 @@ fn garbage_gets_the_same_alarm() {
 /// The built-in corpus (what `cyclecheck corpus` runs), through the campaign runner.
 #[test]
 fn corpus_conforms() {
-    let report = campaign::run((&SpecEngine, &ImplEngine::default()), corpus::cases());
+    let report = campaign::run((&SpecEngine, &ImplEngine), corpus::cases());
     let findings: Vec<String> = report.findings.iter().map(ToString::to_string).collect();
     assert!(report.all_conform(), "{}\n\n{}", report.summary(), findings.join("\n\n"));
 }

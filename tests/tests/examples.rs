@@ -4,7 +4,7 @@
 //! expander checked against the spec by the conformance relation on each. Rule IDs:
 //! G92.EXAMPLE, G76.EXAMPLE, G78.EXAMPLE, F76.EX1, F76.EX2, F76.MICRONS, COM.MULTISTART,
 //! G76.MODE, G78.MODE, G78.DEPTHMODE, COM.UNITS, G162.* (G162.SPLIT: the manual's P2.5 Q1
-//! sequence), G32, G33, G34.
+//! sequence), G32, G33, G34, G71.EXAMPLE, G72.EXAMPLE (and G70.PATH, G70.RETURN).
 
 use cycle_oracle::{conformance, corpus, registry};
 use cycle_vocab::text::Trace;
@@ -60,7 +60,7 @@ fn cuts(trace: &Trace) -> Vec<(PassKind, i64, i64)> {
                     out.push((k, m.x, m.z));
                 }
             }
-            Event::Move(_) => {}
+            Event::Move(_) | Event::Dwell(_) | Event::Spindle(_) => {}
         }
     }
     out
@@ -72,7 +72,7 @@ fn pass_depths(trace: &Trace) -> Vec<(PassKind, i64)> {
         .iter()
         .filter_map(|e| match e {
             Event::Pass(p) => Some((p.kind, p.diameter_depth)),
-            Event::Move(_) => None,
+            Event::Move(_) | Event::Dwell(_) | Event::Spindle(_) => None,
         })
         .collect()
 }
@@ -136,4 +136,42 @@ fn g78_example_mode_05_is_out_of_range() {
     let trace = expand_both("g78", include_str!("../../corpus/g78_example.nc"), gsk());
     let alarm = trace.alarm.expect("alarm");
     assert_eq!((alarm.code, alarm.word, alarm.rule, alarm.line), (AlarmCode::OutOfRange, Some(b'P'), Rule::G78Mode, 3));
+}
+
+/// G71.EXAMPLE: nine layers X37 … X5 (G71.LAYER), the semi-finish pass along the contour shifted
+/// by U0.5 W0.2 (G71.LASTPASS), the return to X41 Z0 (G71.RETURN); then G70 along the contour
+/// itself (G70.PATH) and back (G70.RETURN) — the moves the register lists for example 1. G71.UW:
+/// the first block's U2 is the depth (layers 4 mm apart on the diameter), the second block's U0.5
+/// the allowance (the SEMI pass starts at X0.5 Z0.2).
+#[test]
+fn g71_example_nine_layers_semi_finish_and_g70() {
+    let trace = expand_both("g71", include_str!("../../corpus/g71_example.nc"), gsk());
+    assert_eq!(trace.alarm, None);
+    let passes: Vec<(PassKind, u32)> =
+        trace.events.iter().filter_map(|e| if let Event::Pass(p) = e { Some((p.kind, p.index)) } else { None }).collect();
+    let mut want: Vec<(PassKind, u32)> = (1..=9).map(|k| (PassKind::Rough, k)).collect();
+    want.extend([(PassKind::Semi, 10), (PassKind::Finish, 1)]);
+    assert_eq!(passes, want);
+    let layers: Vec<i64> = trace.moves().filter(|m| m.rule == Rule::G71Layer && m.z == 0).map(|m| m.x).collect();
+    assert_eq!(layers, (0..9).map(|k| 37_000 - 4_000 * k).collect::<Vec<_>>());
+    let semi = trace.moves().find(|m| m.rule == Rule::G71Lastpass).map(|m| (m.x, m.z));
+    assert_eq!(semi, Some((500, 200)));
+    let g70: Vec<(i64, i64)> = trace.moves().filter(|m| matches!(m.rule, Rule::G70Path | Rule::G70Return)).map(|m| (m.x, m.z)).collect();
+    assert_eq!(
+        g70,
+        [(0, 0), (11_000, -5_500), (11_000, -15_500), (17_000, -25_500), (17_000, -40_500), (29_000, -47_848), (29_000, -60_500), (41_000, -60_500), (41_000, 0)]
+    );
+}
+
+/// G72.EXAMPLE: 31 layers at Z0, −1, …, −30 (G72.LAYER), the semi-finish pass, the return to
+/// X41 Z1 (G72.RETURN), then G70.
+#[test]
+fn g72_example_thirty_one_layers() {
+    let trace = expand_both("g72", include_str!("../../corpus/g72_example.nc"), gsk());
+    assert_eq!(trace.alarm, None);
+    let layers: Vec<i64> = trace.moves().filter(|m| m.rule == Rule::G72Layer && m.x == 41_000).map(|m| m.z).collect();
+    assert_eq!(layers, (0..31).map(|k| -1_000 * k).collect::<Vec<_>>());
+    let last = trace.moves().find(|m| m.rule == Rule::G72Return).map(|m| (m.x, m.z));
+    assert_eq!(last, Some((41_000, 1_000)));
+    assert_eq!(trace.moves().last().map(|m| (m.x, m.z, m.rule)), Some((41_000, 1_000, Rule::G70Return)));
 }

@@ -136,6 +136,7 @@ proptest! {
                         if seen_pass { prop_assert_eq!(pos, (ax, az), "{}", ctx); }
                         seen_pass = true;
                     }
+                    Event::Dwell(_) | Event::Spindle(_) => prop_assert!(false, "no dwell or spindle event in a thread cycle: {}", ctx),
                     Event::Move(m) => {
                         if m.kind == MoveKind::Thread {
                             prop_assert_eq!(m.feed, case.lead, "lead kept: {}", ctx);
@@ -473,7 +474,7 @@ proptest! {
             prop_assert!(trace.alarm.is_none(), "legal program refused: {}", ctx);
             let depths: Vec<i64> = trace.events.iter().filter_map(|e| match e {
                 Event::Pass(p) => Some(p.diameter_depth / 2),
-                Event::Move(_) => None,
+                _ => None,
             }).collect();
             match case.pq {
                 None => prop_assert_eq!(depths.clone(), vec![0], "single pass: {}", ctx),
@@ -506,6 +507,7 @@ proptest! {
             for e in &trace.events[first..] {
                 match e {
                     Event::Pass(_) => prop_assert!(at_s, "each pass starts at S: {}", ctx),
+                    Event::Dwell(_) | Event::Spindle(_) => prop_assert!(false, "no dwell or spindle event in a thread cycle: {}", ctx),
                     Event::Move(m) => {
                         prop_assert!(m.kind != MoveKind::Rapid, "no rapid in G162: {}", ctx);
                         if m.kind == MoveKind::Feed {

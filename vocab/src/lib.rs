@@ -25,5 +25,5 @@ pub mod text;
 pub use alarm::{Alarm, AlarmCode};
 pub use params::{Config, Dialect, Params};
 pub use rule::Rule;
-pub use trace::{Event, Move, MoveKind, Pass, PassKind};
+pub use trace::{Dwell, Event, Move, MoveKind, Pass, PassKind, Spindle, SpindleState};
 pub use units::{Grid, Increment, Units};

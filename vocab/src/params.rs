@@ -78,6 +78,10 @@ params! {
     p5133_rough_retract => "5133": "5133: G71/G72 retract e not yet given, increments (G71.PARAM).",
     arc_tolerance => "arc_tolerance": "ARC.TOL: how far an arc's end may lie off its circle, increments (radius).",
     nose_radius => "nose_radius": "TNRC.RADIUS: the tool nose radius, increments; only 0 is modelled.",
+    p5135_escape_x => "5135": "5135: G73 Δi not yet given, increments, radius (G73.ESCAPE).",
+    p5136_escape_z => "5136": "5136: G73 Δk not yet given, increments (G73.ESCAPE).",
+    p5137_count => "5137": "5137: G73 d not yet given (G73.COUNT).",
+    p5139_peck_return => "5139": "5139: G74/G75 return e not yet given, increments (G74.E).",
 }
 
 /// A `--param` name that is not one of [`Params::NAMES`].

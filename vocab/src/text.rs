@@ -18,7 +18,7 @@
 //! non-zero). A pass header prints the radius depth.
 
 use crate::alarm::Alarm;
-use crate::trace::{Event, Move, MoveKind};
+use crate::trace::{Event, Move, MoveKind, SpindleState};
 use crate::units::Grid;
 use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
@@ -59,7 +59,7 @@ impl Trace {
     pub fn moves(&self) -> impl Iterator<Item = &Move> {
         self.events.iter().filter_map(|e| match e {
             Event::Move(m) => Some(m),
-            Event::Pass(_) => None,
+            Event::Pass(_) | Event::Dwell(_) | Event::Spindle(_) => None,
         })
     }
 
@@ -75,6 +75,11 @@ impl Trace {
                 };
                 format!("(PASS {} {} DEPTH {})", p.index, p.kind.name(), depth)
             }
+            Event::Dwell(d) => format!("G04 P{}", d.ms),
+            Event::Spindle(s) => match s.state {
+                SpindleState::Forward => "M03".to_string(),
+                SpindleState::Reverse => "M04".to_string(),
+            },
             Event::Move(m) => {
                 let (x, z) = (fixed(m.x, d), fixed(m.z, d));
                 let f = fixed(m.feed, grid.lead_decimals());

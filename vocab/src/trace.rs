@@ -148,6 +148,33 @@ pub struct Pass {
     pub rule: Rule,
 }
 
+/// A dwell: the tool stays where it is for `ms` milliseconds (G83/G84's P, G04's form).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
+pub struct Dwell {
+    pub ms: u32,
+    pub rule: Rule,
+}
+
+/// The spindle's direction (rigid tapping reverses it at the bottom, G84.PATH).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "std", serde(rename_all = "SCREAMING_SNAKE_CASE"))]
+pub enum SpindleState {
+    /// The programmed direction (`M03` in the canonical form).
+    Forward,
+    /// The opposite direction (`M04`).
+    Reverse,
+}
+
+/// The spindle changes direction.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
+pub struct Spindle {
+    pub state: SpindleState,
+    pub rule: Rule,
+}
+
 /// One trace event.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
@@ -155,6 +182,8 @@ pub struct Pass {
 pub enum Event {
     Pass(Pass),
     Move(Move),
+    Dwell(Dwell),
+    Spindle(Spindle),
 }
 
 impl Event {
@@ -163,6 +192,8 @@ impl Event {
         match self {
             Event::Pass(p) => p.rule,
             Event::Move(m) => m.rule,
+            Event::Dwell(d) => d.rule,
+            Event::Spindle(s) => s.rule,
         }
     }
 }

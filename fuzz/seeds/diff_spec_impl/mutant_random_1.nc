@@ -1,4 +1,5 @@
-(G162 taper: W = +2 mm on diameter over the thread, infeed angle A29.5, F1.96 as the manual's cone examle; --dialect nc201)
-G0 X40 Z3
-G162 X30 Z-50 H300 P1.2 Q0.4 V1.5 W2 A29.5 F1.96
+(G162 two-start thread: one cycle per start, B0 and B180; --dialect nc201)
+G X36 Z4
+G162 X32 Z-24 H500 P0.9 Q0.3 F3 B0
+G162 X32 Z-24 H500 P0.9 Q0.3 F3 B180
 M30

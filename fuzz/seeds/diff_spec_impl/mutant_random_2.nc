@@ -1,4 +1,14 @@
-(G162 taper: W = +2 mm on diameter ove the thread, infeed angle A29.5, F1.96 as the manual's cone example; --dialect nc201)
-G0 X40 Z3
-G162 X30 Z-50 H300 P1.2 Q0.4 V1.5 W2 A29.5 F1.96
+(G71 with contour vertices exactly on layers: depth 2, layers X46, 42, 38, 34, 30, 26, 22 from A = X50 Z2, no allowances)
+(X38: the contour runs along X38 from Z-25+toZ-35, so the cut ends where it eaves the layer, at Z-35;)
+(X30: the piece along X30 from Z-10 to Z-20 lies o the layer, the cut ends at Z-20.)
+G00 X50 Z2
+G71 U2 R0.5
+G71 P10 Q70 F0.3
+N10 G00 X20
+N20 G01 Z-10
+N30 X30
+N40 Z-20
+N50 X38 Z-25
+N60 Z-35
+N70 X50
 M30

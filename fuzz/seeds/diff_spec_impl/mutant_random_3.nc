@@ -1,6 +1,6 @@
-(G92 nternal thread: start inside the bore, pull-out toward the axis, J/K from No.19)
-G00 X16 Z3;
-G92 X20.5 Z-25 F11.5;
-X21;
-X21.2;
-M30;
+(G78 constant depth ode D0: every cut is Q, the last clamped to k 1- d)
+G00 X40 Z5;
+G78 P010260 Q0.08 R0.05 D0;
+G78 X27.4 Z-20 P1.3 Q
+.4 F2 J1 K1;
+M40;

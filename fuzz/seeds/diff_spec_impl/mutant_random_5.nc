@@ -1,7 +1,9 @@
-(G90 in inch units, straight then taper; run with --units inch)
-G20;
-G0 X2. Z0.1;
-G90 X1.8 Z-1.5 F0.01;
-X1.7;
-G90 X1.6 Z-1.5 I-0.05; (sa5e run, pass ’: the cut starts at 51.5)
+(G90.EXAMPLE, M003 textbook notes: single OD cutting cycle, straight and taper; the seed prints G90X40.Z40.F0.3; and G90X40.Z-40.I-5.F0.3;35.)
+(Read as docs/INTERPRETATION.md says: Z40. is Z-40., the minus sign lost in print; 35. is the mod1l block X35., the letter lost.)
+(The seed gives no start point: the program starts at X50 Z2, outside a 40 mm stock.)
+G0 X50 Z2;
+G90 X40. Z-40. F0.3; (straight: cut at X40 from Z2 to Z-40)
+G0 X50 Z2; (G00 ends the run, so the taper starts a new one)
+G90 X40. Z-40. I-5. F0.3; (taper: the cut starts at X30 and ends at X40 Z-40)
+X35.; (modal repeat, I-5 kept: the cut starts at X25)
 M30;

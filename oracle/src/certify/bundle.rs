@@ -1,8 +1,11 @@
 //! The evidence bundle on disk, written atomically: the whole bundle is staged in a hidden
-//! sibling directory (`.NAME.staging-PID`), every file and directory fsynced, then renamed into
-//! place. A reader — or a run killed half-way — sees the previous complete bundle or the new
-//! complete one, never a half-written report. Replacing a previous bundle takes two renames (old
-//! aside, new in), so for that instant `DIR` is absent, never partial.
+//! sibling directory (`.NAME.staging-PID`) — created before the run, which checks `--out` up
+//! front, and filled during it (`cases.jsonl`, one line per case as it is judged) — then every
+//! file and directory fsynced and the directory renamed into place. A reader — or a run killed
+//! half-way — sees the previous complete bundle or the new complete one, never a half-written
+//! report; an interrupted or failed run removes its staging directory ([`crate::reaper`]).
+//! Replacing a previous bundle takes two renames (old aside, new in), so for that instant `DIR`
+//! is absent, never partial.
 //!
 //! An existing `DIR` is replaced only when it is empty or holds an `evidence.json` (a previous
 //! bundle): `--out ~` must not delete a home directory.
@@ -12,16 +15,17 @@ use super::html;
 use super::matrix;
 use super::plot;
 use super::{CaseResult, Run};
+use crate::reaper;
 use std::fs::{self, File};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 
-/// The bundle's files: relative path → contents.
+/// The bundle's files but `cases.jsonl` (written during the run): relative path → contents.
 pub fn files(run: &Run) -> Vec<(String, Vec<u8>)> {
     let rows = matrix::rows(Some(run));
     let mut plots = Vec::new();
     let mut files = Vec::new();
-    for r in &run.records {
+    for r in &run.corpus {
         let (Some((reference, candidate)), super::Origin::Corpus { path }) = (&r.traces, &r.origin) else { continue };
         let (cand, div) = match &r.result {
             CaseResult::Diverge(d) => (candidate.as_ref(), Some((d.index, d.rule))),
@@ -29,7 +33,7 @@ pub fn files(run: &Run) -> Vec<(String, Vec<u8>)> {
         };
         let svg = plot::svg(&r.name, &r.config, reference, cand, div);
         files.push((format!("plots/{}.svg", r.name), svg.clone().into_bytes()));
-        plots.push((r.name.clone(), path.to_string(), r.result.short(), svg));
+        plots.push(html::PlotEntry { name: r.name.clone(), path: path.to_string(), result: html::result_line(r), svg });
     }
     let doc = evidence::document(run, &rows);
     let json = serde_json::to_string_pretty(&doc).expect("JSON values serialize");
@@ -51,62 +55,113 @@ fn replaceable(dir: &Path) -> io::Result<bool> {
     Ok(dir.join("evidence.json").is_file() || fs::read_dir(dir)?.next().is_none())
 }
 
-/// Writes `files` as the bundle directory `out`, atomically (see the module documentation).
-pub fn write(out: &Path, files: &[(String, Vec<u8>)]) -> io::Result<()> {
-    let name = out
-        .file_name()
-        .ok_or_else(|| io::Error::new(io::ErrorKind::InvalidInput, format!("{} names no directory", out.display())))?
-        .to_string_lossy()
-        .into_owned();
-    let parent = match out.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
+/// Refuses an `out` that exists and is no bundle (nor empty).
+fn check_out(out: &Path) -> io::Result<()> {
     if out.exists() && (!out.is_dir() || !replaceable(out)?) {
         return Err(io::Error::new(
             io::ErrorKind::AlreadyExists,
             format!("{} exists and is not an evidence bundle (no evidence.json); choose another --out", out.display()),
         ));
     }
-    fs::create_dir_all(&parent)?;
-    let pid = std::process::id();
-    let staging = parent.join(format!(".{name}.staging-{pid}"));
-    let result = (|| {
-        if staging.exists() {
-            fs::remove_dir_all(&staging)?;
+    Ok(())
+}
+
+/// A bundle being written: its staging directory, removed unless committed.
+pub struct Staging {
+    out: PathBuf,
+    parent: PathBuf,
+    name: String,
+    dir: PathBuf,
+    committed: bool,
+}
+
+impl Staging {
+    /// Checks `out` (a directory name; absent, empty or a previous bundle) and creates the
+    /// staging directory beside it, which shows the place is writable.
+    pub fn create(out: &Path) -> io::Result<Staging> {
+        let name = out
+            .file_name()
+            .filter(|n| *n != "." && *n != "..")
+            .ok_or_else(|| io::Error::new(io::ErrorKind::InvalidInput, format!("{} names no directory", out.display())))?
+            .to_string_lossy()
+            .into_owned();
+        let parent = match out.parent() {
+            Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
+        check_out(out)?;
+        fs::create_dir_all(&parent)?;
+        let dir = parent.join(format!(".{name}.staging-{}", std::process::id()));
+        if dir.exists() {
+            fs::remove_dir_all(&dir)?;
         }
-        fs::create_dir(&staging)?;
-        let mut dirs = vec![staging.clone()];
-        for (rel, contents) in files {
-            let path = staging.join(rel);
-            if let Some(dir) = path.parent() {
-                if !dir.exists() {
-                    fs::create_dir_all(dir)?;
-                    dirs.push(dir.to_path_buf());
-                }
-            }
-            let mut f = File::create(&path)?;
-            f.write_all(contents)?;
-            f.sync_all()?;
+        fs::create_dir(&dir)?;
+        reaper::register_directory(dir.clone());
+        Ok(Staging { out: out.to_path_buf(), parent, name, dir, committed: false })
+    }
+
+    /// A new file of the bundle, for writing.
+    pub fn create_file(&self, rel: &str) -> io::Result<File> {
+        let path = self.dir.join(rel);
+        if let Some(dir) = path.parent() {
+            fs::create_dir_all(dir)?;
         }
-        for d in dirs.iter().rev() {
-            sync_dir(d)?;
-        }
-        if out.exists() {
-            let old = parent.join(format!(".{name}.old-{pid}"));
-            fs::rename(out, &old)?;
-            fs::rename(&staging, out)?;
-            sync_dir(&parent)?;
+        File::create(path)
+    }
+
+    /// Writes a file of the bundle.
+    pub fn write(&self, rel: &str, contents: &[u8]) -> io::Result<()> {
+        self.create_file(rel)?.write_all(contents)
+    }
+
+    /// Fsyncs everything staged and renames it into place as `out`.
+    pub fn commit(mut self) -> io::Result<()> {
+        sync_tree(&self.dir)?;
+        check_out(&self.out)?;
+        if self.out.exists() {
+            let old = self.parent.join(format!(".{}.old-{}", self.name, std::process::id()));
+            fs::rename(&self.out, &old)?;
+            fs::rename(&self.dir, &self.out)?;
+            sync_dir(&self.parent)?;
             fs::remove_dir_all(&old)?;
         } else {
-            fs::rename(&staging, out)?;
+            fs::rename(&self.dir, &self.out)?;
         }
-        sync_dir(&parent)
-    })();
-    if result.is_err() && staging.exists() {
-        let _ = fs::remove_dir_all(&staging);
+        self.committed = true;
+        reaper::unregister_directory(&self.dir);
+        sync_dir(&self.parent)
     }
-    result
+}
+
+impl Drop for Staging {
+    fn drop(&mut self) {
+        if !self.committed {
+            let _ = fs::remove_dir_all(&self.dir);
+            reaper::unregister_directory(&self.dir);
+        }
+    }
+}
+
+/// Fsyncs every file under `dir`, then the directories, deepest first.
+fn sync_tree(dir: &Path) -> io::Result<()> {
+    for entry in fs::read_dir(dir)? {
+        let path = entry?.path();
+        if path.is_dir() {
+            sync_tree(&path)?;
+        } else {
+            File::open(&path)?.sync_all()?;
+        }
+    }
+    sync_dir(dir)
+}
+
+/// Writes `files` as the bundle directory `out`, atomically (see the module documentation).
+pub fn write(out: &Path, files: &[(String, Vec<u8>)]) -> io::Result<()> {
+    let staging = Staging::create(out)?;
+    for (rel, contents) in files {
+        staging.write(rel, contents)?;
+    }
+    staging.commit()
 }
 
 #[cfg(test)]
@@ -143,6 +198,19 @@ mod tests {
         let e = write(&root, &[("evidence.json".to_string(), b"1".to_vec())]).unwrap_err();
         assert_eq!(e.kind(), io::ErrorKind::AlreadyExists);
         assert_eq!(fs::read(root.join("precious.txt")).unwrap(), b"keep");
+        fs::remove_dir_all(&root).unwrap();
+    }
+
+    #[test]
+    fn a_staging_directory_dropped_uncommitted_is_removed() {
+        let root = tmp("drop");
+        let out = root.join("evidence");
+        let staging = Staging::create(&out).unwrap();
+        staging.write("cases.jsonl", b"{}\n").unwrap();
+        assert_eq!(fs::read_dir(&root).unwrap().count(), 1);
+        drop(staging);
+        assert_eq!(fs::read_dir(&root).unwrap().count(), 0, "no staging left, no bundle written");
+        assert!(Staging::create(Path::new("..")).is_err() && Staging::create(Path::new("/")).is_err());
         fs::remove_dir_all(&root).unwrap();
     }
 }

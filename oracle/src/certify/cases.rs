@@ -1,20 +1,21 @@
-//! The case list of a certification run: the corpus programs of the covered cycles, then the
-//! generated cases — one generator per covered registry family, and garbage when every family
-//! is covered.
+//! The cases of a certification run, drawn one at a time: the corpus programs of the covered
+//! cycles, then the generated cases — one generator per covered registry family, and garbage
+//! when every family is covered. Nothing is drawn ahead, so the run's memory does not grow with
+//! the number of cases.
 
-use super::judge::try_engine;
 use super::{Options, Origin};
 use crate::corpus;
 use crate::engine::SpecEngine;
 use crate::gen::{self, Case};
+use crate::judge::observe;
 use crate::registry::{self, FAMILIES};
 use cycle_vocab::Config;
 use proptest::strategy::{BoxedStrategy, Strategy, ValueTree};
 use proptest::test_runner::{Config as ProptestConfig, RngAlgorithm, TestRng, TestRunner};
 
-/// One case of the list: its name, origin, program and configuration, and (generated cases)
-/// the value tree it came from, for shrinking.
-pub(super) struct Pending {
+/// One case: its name, origin, program and configuration, and (generated cases) the value tree
+/// it came from, for shrinking.
+pub struct Pending {
     pub name: String,
     pub origin: Origin,
     pub program: Vec<u8>,
@@ -39,69 +40,109 @@ fn family_seed(seed: u64, number: u64) -> u64 {
     seed ^ number.wrapping_mul(0x9e37_79b9_7f4a_7c15)
 }
 
-/// The generators of a run: name, number, strategy, cases to draw.
-fn generators(options: &Options) -> Vec<(&'static str, u64, BoxedStrategy<Case>, u32)> {
-    let mut g: Vec<_> = FAMILIES
+/// A generator of a run: name, number, strategy, cases to draw.
+struct Generator {
+    family: &'static str,
+    number: u64,
+    strategy: BoxedStrategy<Case>,
+    count: u32,
+}
+
+fn generators(options: &Options) -> Vec<Generator> {
+    let mut g: Vec<Generator> = FAMILIES
         .iter()
         .enumerate()
         .filter(|(_, f)| options.cycles.contains(f))
-        .map(|(i, f)| (f.name, i as u64 + 1, f.strategy(), options.cases))
+        .map(|(i, f)| Generator { family: f.name, number: i as u64 + 1, strategy: f.strategy(), count: options.cases })
         .collect();
     if options.all_cycles() {
-        g.push(("garbage", 0, gen::garbage::strategy(), options.cases.div_ceil(5)));
+        g.push(Generator { family: "garbage", number: 0, strategy: gen::garbage::strategy(), count: options.cases.div_ceil(5) });
     }
     g
 }
 
 /// Whether the run covers a case: always with every family; else when the case runs a covered
-/// family (the reference run once more for its alarm line).
+/// family (the reference run once more, for its alarm line).
 fn covered(options: &Options, program: &[u8], config: &Config) -> bool {
     if options.all_cycles() {
         return true;
     }
-    let reference = try_engine(&SpecEngine, program, config).ok();
-    options.covers(registry::cycle_run(program, config, reference.as_ref()))
+    let alarm = observe(&SpecEngine, program, config, false).ok().and_then(|(seen, _)| seen.alarm);
+    options.covers(registry::cycle_run_until(program, config, alarm.as_ref()))
 }
 
-/// The case list and the generators' runs.
-pub(super) fn case_list(options: &Options) -> (Vec<Pending>, Vec<FamilyRun>) {
-    let mut list = Vec::new();
-    for p in corpus::PROGRAMS {
-        let config = p.config();
-        if covered(options, p.text.as_bytes(), &config) {
-            list.push(Pending {
-                name: p.name.to_string(),
-                origin: Origin::Corpus { path: p.path },
-                program: p.text.as_bytes().to_vec(),
-                config,
-                tree: None,
-            });
-        }
+/// The cases of a run, in order, drawn as they are asked for.
+pub struct Cases<'o> {
+    options: &'o Options,
+    corpus: std::slice::Iter<'static, corpus::Program>,
+    generators: std::vec::IntoIter<Generator>,
+    /// The generator being drawn from, its runner and the next index.
+    current: Option<(Generator, TestRunner, u32)>,
+    /// The generators' runs so far (the current one last).
+    pub runs: Vec<FamilyRun>,
+    /// Candidates for cases drawn so far (kept or not), and the most there can be.
+    pub drawn: usize,
+    pub total: usize,
+}
+
+impl<'o> Cases<'o> {
+    pub fn new(options: &'o Options) -> Cases<'o> {
+        let generators = generators(options);
+        let total = corpus::PROGRAMS.len() + generators.iter().map(|g| g.count as usize).sum::<usize>();
+        Cases { options, corpus: corpus::PROGRAMS.iter(), generators: generators.into_iter(), current: None, runs: Vec::new(), drawn: 0, total }
     }
-    let mut runs = Vec::new();
-    for (family, number, strategy, count) in generators(options) {
-        let seed = family_seed(options.seed, number);
-        let config = ProptestConfig { cases: count, failure_persistence: None, ..ProptestConfig::default() };
-        let mut runner = TestRunner::new_with_rng(config, TestRng::from_seed(RngAlgorithm::ChaCha, &gen::seed_bytes(seed)));
-        let mut kept = 0;
-        for index in 0..count {
-            let Ok(tree) = strategy.new_tree(&mut runner) else { continue };
-            let case = tree.current();
-            if !covered(options, &case.program, &case.config) {
+
+    fn next_corpus(&mut self) -> Option<Pending> {
+        for p in self.corpus.by_ref() {
+            self.drawn += 1;
+            let config = p.config();
+            if covered(self.options, p.text.as_bytes(), &config) {
+                let (name, origin) = (p.name.to_string(), Origin::Corpus { path: p.path });
+                return Some(Pending { name, origin, program: p.text.as_bytes().to_vec(), config, tree: None });
+            }
+        }
+        None
+    }
+
+    fn next_generated(&mut self) -> Option<Pending> {
+        loop {
+            if self.current.is_none() {
+                let g = self.generators.next()?;
+                let seed = family_seed(self.options.seed, g.number);
+                let config = ProptestConfig { cases: g.count, failure_persistence: None, ..ProptestConfig::default() };
+                let runner = TestRunner::new_with_rng(config, TestRng::from_seed(RngAlgorithm::ChaCha, &gen::seed_bytes(seed)));
+                self.runs.push(FamilyRun { family: g.family, seed, drawn: g.count, kept: 0 });
+                self.current = Some((g, runner, 0));
+            }
+            let (g, runner, index) = self.current.as_mut()?;
+            if *index == g.count {
+                self.current = None;
                 continue;
             }
-            kept += 1;
-            list.push(Pending {
-                name: format!("{family}#{index}"),
-                origin: Origin::Generated { family, index },
-                program: case.program,
-                config: case.config,
-                tree: Some(tree),
-            });
+            let i = *index;
+            *index += 1;
+            self.drawn += 1;
+            let Ok(tree) = g.strategy.new_tree(runner) else { continue };
+            let case = tree.current();
+            if !covered(self.options, &case.program, &case.config) {
+                continue;
+            }
+            if let Some(run) = self.runs.last_mut() {
+                run.kept += 1;
+            }
+            let family = g.family;
+            let origin = Origin::Generated { family, index: i };
+            return Some(Pending { name: format!("{family}#{i}"), origin, program: case.program, config: case.config, tree: Some(tree) });
         }
-        runs.push(FamilyRun { family, seed, drawn: count, kept });
     }
-    (list, runs)
+}
+
+impl Iterator for Cases<'_> {
+    type Item = Pending;
+
+    fn next(&mut self) -> Option<Pending> {
+        self.next_corpus().or_else(|| self.next_generated())
+    }
 }
 
 #[cfg(test)]
@@ -113,11 +154,18 @@ mod tests {
         registry::cycle_run(program, config, Some(&cycle_spec::expand(program, config)))
     }
 
+    fn drain(o: &Options) -> (Vec<Pending>, Vec<FamilyRun>) {
+        let mut cases = Cases::new(o);
+        let list: Vec<Pending> = cases.by_ref().collect();
+        assert_eq!(cases.drawn, cases.total);
+        (list, cases.runs)
+    }
+
     #[test]
-    fn case_list_is_seeded_and_filtered() {
+    fn cases_are_seeded_and_filtered() {
         let o = Options { cycles: Options::parse_cycles("g92").unwrap(), cases: 20, ..Options::default() };
-        let (a, fa) = case_list(&o);
-        let (b, _) = case_list(&o);
+        let (a, fa) = drain(&o);
+        let (b, _) = drain(&o);
         assert_eq!(a.iter().map(|p| &p.program).collect::<Vec<_>>(), b.iter().map(|p| &p.program).collect::<Vec<_>>());
         let g92 = CycleRun::Family(registry::find("g92").unwrap());
         assert!(a.iter().all(|p| runs(&p.program, &p.config) == g92));
@@ -125,10 +173,10 @@ mod tests {
         assert_eq!((fa.len(), fa[0].family, fa[0].drawn), (1, "g92", 20));
         assert!(fa[0].kept >= 15, "{fa:?}");
         let other = Options { seed: 1, ..o.clone() };
-        let (c, _) = case_list(&other);
+        let (c, _) = drain(&other);
         assert_ne!(a.last().unwrap().program, c.last().unwrap().program);
         // A family draws the same cases alone as with the others.
-        let (all, _) = case_list(&Options { cases: 20, ..Options::default() });
+        let (all, _) = drain(&Options { cases: 20, ..Options::default() });
         let generated = |l: &[Pending]| -> Vec<Vec<u8>> {
             l.iter().filter(|p| p.name.starts_with("g92#")).map(|p| p.program.clone()).collect()
         };
@@ -138,7 +186,7 @@ mod tests {
 
     #[test]
     fn every_family_and_garbage_generate_with_all_cycles() {
-        let (_, runs) = case_list(&Options { cases: 5, ..Options::default() });
+        let (_, runs) = drain(&Options { cases: 5, ..Options::default() });
         let names: Vec<&str> = runs.iter().map(|r| r.family).collect();
         let mut expected: Vec<&str> = FAMILIES.iter().map(|f| f.name).collect();
         expected.push("garbage");

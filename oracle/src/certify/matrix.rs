@@ -6,6 +6,12 @@
 //!
 //! The citations are found at build time (`oracle/build.rs` scans the workspace for rule IDs
 //! and `Rule::` variants) and compiled in, so an installed `cyclecheck` needs no source tree.
+//! A citation in a module's documentation (`//!`, outside any item) is a *mention*: shown apart,
+//! it neither implements nor checks the rule.
+//!
+//! A rule is *exercised* in a run when a case's reference trace or alarm carries its tag, or
+//! when a built-in program that illustrates it ([`crate::corpus::Program::rules`]) ran and
+//! conformed.
 
 use super::Run;
 use crate::catalogue;
@@ -64,18 +70,30 @@ pub struct Citation {
     pub item: &'static str,
 }
 
+impl Citation {
+    /// Whether it is a mention in a module's documentation rather than code or a check.
+    pub fn is_mention(&self) -> bool {
+        self.item == MODULE_DOCS
+    }
+}
+
+/// The item of a citation outside any item: a module's documentation.
+pub const MODULE_DOCS: &str = "module docs";
+
 include!(concat!(env!("OUT_DIR"), "/citations.rs"));
 
 /// A rule's result in a run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(tag = "result", rename_all = "snake_case")]
 pub enum Outcome {
-    /// Exercised by `cases` cases, no divergence names it.
-    Pass { cases: usize },
+    /// Exercised — by `cases` cases whose trace or alarm carries it, and by `programs` built-in
+    /// programs that illustrate it and conformed — and no divergence names it.
+    Pass { cases: usize, programs: usize },
     /// `divergences` divergent cases name it (of `cases` exercising it).
     Fail { cases: usize, divergences: usize },
-    /// Implemented, but no reference trace of this run carries its tag (rules such as COM.AXES
-    /// shape every trace without tagging a move: see the citations for their checks).
+    /// Implemented, but no reference trace of this run carries its tag and no conforming
+    /// built-in program illustrates it (rules such as COM.AXES shape every trace without tagging
+    /// a move: see the citations for their checks).
     NotExercised,
     /// The catalogue does not mark it implemented (`later`, `unsupported`).
     NotImplemented,
@@ -84,9 +102,11 @@ pub enum Outcome {
 impl Outcome {
     pub fn label(self) -> String {
         match self {
-            Outcome::Pass { cases } => format!("pass ({cases} cases)"),
+            Outcome::Pass { cases, programs: 0 } => format!("pass ({cases} cases)"),
+            Outcome::Pass { cases: 0, programs } => format!("pass ({programs} built-in programs)"),
+            Outcome::Pass { cases, programs } => format!("pass ({cases} cases; {programs} built-in programs)"),
             Outcome::Fail { cases, divergences } => format!("FAIL ({divergences} of {cases} cases)"),
-            Outcome::NotExercised => "untagged in this run".to_string(),
+            Outcome::NotExercised => "not exercised in this run".to_string(),
             Outcome::NotImplemented => "not implemented".to_string(),
         }
     }
@@ -109,19 +129,29 @@ pub struct Row {
 }
 
 impl Row {
-    /// The citations of one kind.
+    /// The citations of one kind, mentions aside.
     pub fn of(&self, kind: Kind) -> impl Iterator<Item = &Citation> {
-        self.citations.iter().filter(move |c| c.kind == kind)
+        self.citations.iter().filter(move |c| c.kind == kind && !c.is_mention())
+    }
+
+    /// The mentions in module documentation.
+    pub fn mentions(&self) -> impl Iterator<Item = &Citation> {
+        self.citations.iter().filter(|c| c.is_mention())
     }
 
     /// Whether it points at code: the spec, the production expander, or code they share.
     pub fn has_code(&self) -> bool {
-        self.citations.iter().any(|c| matches!(c.kind, Kind::Spec | Kind::Impl | Kind::Shared))
+        Kind::ALL.iter().any(|&k| matches!(k, Kind::Spec | Kind::Impl | Kind::Shared) && self.of(k).next().is_some())
     }
 
-    /// Whether a test, proof or fuzz target checks it.
+    /// Whether a test, proof or fuzz target checks it (a mention is no check).
     pub fn has_check(&self) -> bool {
-        self.citations.iter().any(|c| c.kind.is_check())
+        Kind::ALL.iter().any(|&k| k.is_check() && self.of(k).next().is_some())
+    }
+
+    /// Whether the run exercised it.
+    pub fn exercised(&self) -> bool {
+        matches!(self.outcome, Outcome::Pass { .. } | Outcome::Fail { .. })
     }
 }
 
@@ -136,6 +166,7 @@ pub fn citations(rule: Rule) -> Vec<Citation> {
 /// results from `run` (when given: otherwise every implemented rule is `NotExercised`).
 pub fn rows(run: Option<&Run>) -> Vec<Row> {
     let by_rule = run.map(Run::by_rule).unwrap_or_default();
+    let illustrated = run.map(Run::illustrated).unwrap_or_default();
     let mut rows: Vec<Row> = Rule::ALL
         .iter()
         .map(|&rule| {
@@ -143,11 +174,12 @@ pub fn rows(run: Option<&Run>) -> Vec<Row> {
             let status = entry.map_or("missing from docs/RULES.md", |e| e.status);
             let implemented = status.starts_with("impl");
             let (cases, divergences) = by_rule.get(&rule).copied().unwrap_or((0, 0));
-            let outcome = match (implemented, cases, divergences) {
+            let programs = illustrated.get(&rule).copied().unwrap_or(0);
+            let outcome = match (implemented, cases + programs, divergences) {
                 (_, _, d) if d > 0 => Outcome::Fail { cases, divergences: d },
                 (false, _, _) => Outcome::NotImplemented,
                 (true, 0, _) => Outcome::NotExercised,
-                (true, n, _) => Outcome::Pass { cases: n },
+                (true, _, _) => Outcome::Pass { cases, programs },
             };
             Row {
                 id: rule.id(),
@@ -165,12 +197,21 @@ pub fn rows(run: Option<&Run>) -> Vec<Row> {
     rows
 }
 
+/// Rules exercised in the run, and rules implemented.
+pub fn coverage(rows: &[Row]) -> (usize, usize) {
+    let implemented = rows.iter().filter(|r| r.implemented);
+    (implemented.clone().filter(|r| r.exercised()).count(), implemented.count())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     /// The traceability promise: every catalogue rule has a row, and every implemented rule
-    /// points at code (spec, production or shared) and at least one test, proof or fuzz target.
+    /// points at code (spec, production or shared) and at least one test, proof or fuzz target —
+    /// mentions in module documentation count for neither. A manual's example (status `impl
+    /// (snapshot…)`) is implemented by the rules it shows, not by code of its own: it needs the
+    /// check only.
     /// A rule that fails here needs a citation where it is implemented or checked — not a
     /// weaker test.
     #[test]
@@ -181,8 +222,9 @@ mod tests {
             assert!(ids.contains(&rule.id()), "{rule} has no row");
         }
         let mut missing = Vec::new();
+        // A check in a module's documentation is no check.
         for r in rows.iter().filter(|r| r.implemented) {
-            if !r.has_code() {
+            if !r.has_code() && !r.status.contains("(snapshot") {
                 missing.push(format!("{}: no spec, impl or shared code", r.id));
             }
             if !r.has_check() {

@@ -1,12 +1,16 @@
-//! Divergence groups — the cases of one signature (kind, field, rule) — and the minimization of
-//! a group's first case: a generated case by proptest's shrinking of its knobs, then, like a
-//! corpus program, by deleting lines while the same divergence stays.
+//! Divergence groups — the cases of one signature (kind, field, rule), built as the run goes —
+//! and the minimization of a group's first case: a generated case by proptest's shrinking of its
+//! knobs, then, like a corpus program, by deleting lines while the same divergence stays.
 
 use super::cases::Pending;
-use super::{judge, CaseRecord, CaseResult, SHRINK_STEPS};
+use super::{CaseRecord, MAX_MINIMIZED, SHRINK_STEPS};
 use crate::conformance::{Divergence, DivergenceKind};
 use crate::engine::{Engine, SpecEngine};
+use crate::judge::{judge, CaseResult};
 use cycle_vocab::{Config, Rule};
+
+/// A group lists the names of at most this many of its cases (`cases.jsonl` has them all).
+pub const MAX_NAMES: usize = 100;
 
 /// The identity of a divergence for grouping: kind, field, the reference's rule.
 pub type Signature = (DivergenceKind, Option<&'static str>, Option<Rule>);
@@ -28,41 +32,62 @@ pub struct Minimized {
 }
 
 /// The cases with one divergence signature.
-#[derive(Clone, Debug)]
 pub struct Group {
     pub signature: Signature,
-    /// Indices into [`super::Run::records`], in run order.
-    pub cases: Vec<usize>,
-    /// The first case minimized (the first [`super::MAX_MINIMIZED`] groups only).
+    /// How many cases diverge so.
+    pub count: usize,
+    /// The names of the first [`MAX_NAMES`] of them, in run order.
+    pub names: Vec<String>,
+    /// The first case.
+    pub first: CaseRecord,
+    /// The first case minimized (the first [`MAX_MINIMIZED`] groups only).
     pub minimized: Option<Minimized>,
+    /// The first case as drawn, kept for its minimization.
+    pending: Option<Pending>,
 }
 
+/// Adds a judged case to the groups: its group's index when it diverges.
+pub(super) fn add(groups: &mut Vec<Group>, record: &CaseRecord, pending: Pending) -> Option<usize> {
+    let CaseResult::Diverge(d) = &record.result else { return None };
+    let sig = signature(d);
+    if let Some(g) = groups.iter().position(|g| g.signature == sig) {
+        let group = &mut groups[g];
+        group.count += 1;
+        if group.names.len() < MAX_NAMES {
+            group.names.push(record.name.clone());
+        }
+        return Some(g);
+    }
+    let first = CaseRecord { traces: None, ..record.clone() };
+    let pending = (groups.len() < MAX_MINIMIZED).then_some(pending);
+    groups.push(Group { signature: sig, count: 1, names: vec![record.name.clone()], first, minimized: None, pending });
+    Some(groups.len() - 1)
+}
 
-/// The divergent cases of `records` grouped by signature, in run order.
-pub(super) fn groups(records: &[CaseRecord]) -> Vec<Group> {
-    let mut groups: Vec<Group> = Vec::new();
-    for (i, r) in records.iter().enumerate() {
-        if let CaseResult::Diverge(d) = &r.result {
-            let sig = signature(d);
-            match groups.iter_mut().find(|g| g.signature == sig) {
-                Some(g) => g.cases.push(i),
-                None => groups.push(Group { signature: sig, cases: vec![i], minimized: None }),
-            }
+/// Minimizes the first case of each group that kept it, reporting progress.
+pub(super) fn minimize_groups(engine: &dyn Engine, groups: &mut [Group], progress: &mut dyn FnMut(usize, usize)) {
+    let total = groups.iter().filter(|g| g.pending.is_some()).count();
+    for (n, g) in groups.iter_mut().filter(|g| g.pending.is_some()).enumerate() {
+        progress(n, total);
+        if let Some(mut p) = g.pending.take() {
+            g.minimized = minimize(engine, &g.first, &mut p, g.signature);
         }
     }
-    groups
+    if total > 0 {
+        progress(total, total);
+    }
 }
 
 /// The divergence of `program` if it has signature `sig`.
 fn diverges_as(engine: &dyn Engine, program: &[u8], config: &Config, sig: Signature) -> Option<Divergence> {
-    match judge(&SpecEngine, engine, program, config).2 {
+    match judge(&SpecEngine, engine, program, config).result {
         CaseResult::Diverge(d) if signature(&d) == sig => Some(*d),
         _ => None,
     }
 }
 
 /// The smallest input found that diverges with the same signature.
-pub(super) fn minimize(engine: &dyn Engine, record: &CaseRecord, pending: &mut Pending, sig: Signature) -> Option<Minimized> {
+fn minimize(engine: &dyn Engine, record: &CaseRecord, pending: &mut Pending, sig: Signature) -> Option<Minimized> {
     let CaseResult::Diverge(first) = &record.result else { return None };
     let mut best = Minimized {
         program: record.program.clone(),
@@ -135,10 +160,10 @@ mod tests {
     #[test]
     fn a_wrong_candidate_is_found_grouped_and_minimized() {
         let o = Options { cycles: Options::parse_cycles("g92").unwrap(), cases: 10, ..Options::default() };
-        let (mut list, _) = super::super::cases::case_list(&o);
-        let p = &list[0];
-        let (r, c, result) = judge(&SpecEngine, &THREAD_X_OFF, &p.program, &p.config);
-        assert!(r.is_some() && c.is_some());
+        let mut p = super::super::cases::Cases::new(&o).next().unwrap();
+        let judged = judge(&SpecEngine, &THREAD_X_OFF, &p.program, &p.config);
+        assert!(judged.reference.is_some());
+        let result = judged.result;
         let CaseResult::Diverge(d) = &result else { panic!("{result:?}") };
         assert_eq!(d.field, Some("x"));
         let record = CaseRecord {
@@ -153,7 +178,7 @@ mod tests {
             result: result.clone(),
             traces: None,
         };
-        let m = minimize(&THREAD_X_OFF, &record, &mut list[0], signature(d)).unwrap();
+        let m = minimize(&THREAD_X_OFF, &record, &mut p, signature(d)).unwrap();
         assert_eq!(m.method, "line deletion");
         assert!(m.program.len() < record.program.len(), "{}", String::from_utf8_lossy(&m.program));
         assert_eq!(signature(&m.divergence), signature(d));

@@ -4,50 +4,65 @@
 //! [`crate::corpus`]) and a fixed-seed generated campaign ([`cases`]: one generator per cycle
 //! family of [`crate::registry`], and garbage), runs each case through the reference spec and a
 //! candidate — the production expander, or a vendor's expander behind the candidate protocol
-//! ([`crate::candidate`]) — and judges each pair of traces with the conformance relation
-//! ([`crate::conformance`]).
+//! ([`crate::candidate`]) — and judges the pair in lockstep with the conformance relation
+//! ([`crate::judge`]).
 //!
-//! Every case is recorded: the cycle it runs ([`crate::registry::cycle_run`]), the rules its
-//! reference trace exercises (the rule tags of its moves, passes and alarm), and its result —
-//! conform, the first divergence, or the candidate's failure (timeout, crash, garbage, …).
-//! Divergences are grouped by signature and the first case of each group minimized
-//! ([`minimize`]).
+//! Every case is recorded as it is judged, one JSON line in `cases.jsonl` ([`tally`]): the
+//! cycle it runs ([`crate::registry::cycle_run`]), the rules its reference trace exercises (the
+//! rule tags of its moves, passes and alarm), and its result — conform, the first divergence, or
+//! the candidate's failure (timeout, crash, garbage, …). In memory the run keeps counts
+//! ([`tally::Tally`]), the corpus programs' traces (the plots), the first failures, and the
+//! divergence groups by signature, the first case of each minimized ([`minimize`]): memory does
+//! not grow with the number of cases.
 //!
-//! The bundle ([`bundle::write`]): `evidence.json` ([`evidence`]), `index.html` ([`html`]) with
-//! the traceability matrix ([`matrix`]) and the interpretation register, and one SVG toolpath
-//! per corpus program ([`plot`]).
+//! The bundle ([`bundle`]): `evidence.json` ([`evidence`]) with the run's identity
+//! ([`identity`]), `cases.jsonl`, `index.html` ([`html`]) with the traceability matrix
+//! ([`matrix`]) and the interpretation register, and one SVG toolpath per corpus program
+//! ([`plot`]).
 
 pub mod bundle;
 pub mod cases;
 pub mod evidence;
 pub mod html;
-pub mod judge;
+pub mod identity;
+pub mod kani;
 pub mod markdown;
 pub mod matrix;
 pub mod minimize;
 pub mod plot;
+pub mod proofs;
+pub mod tally;
 
+pub use crate::judge::CaseResult;
 pub use cases::FamilyRun;
-pub use judge::{candidate_engine, judge, CaseResult};
 pub use minimize::{Group, Minimized, Signature};
 
 use crate::candidate::{CandidateEngine, Limits};
 use crate::conformance;
+use crate::corpus;
 use crate::engine::{Engine, FailureKind, ImplEngine, SpecEngine};
+use crate::judge::{judge, judge_keeping, Judged};
 use crate::registry::{self, CycleRun, Family, FAMILIES};
 use cycle_vocab::text::Trace;
 use cycle_vocab::{Config, Rule};
 use std::collections::{BTreeMap, BTreeSet};
+use std::io::Write;
 use std::time::{Duration, Instant};
 
+/// Where the bundle goes by default.
+pub const DEFAULT_OUT: &str = "evidence";
 /// The default seed of the generated campaign (the differential tests' default).
 pub const DEFAULT_SEED: u64 = 0x5eed_c7c1_e0ac_1e00;
 /// Generated cases per family by default.
 pub const DEFAULT_CASES: u32 = 2000;
+/// A candidate run stops after this many consecutive candidate failures by default.
+pub const DEFAULT_MAX_FAILURES: u32 = 10;
 /// At most this many divergence signatures are minimized.
 pub const MAX_MINIMIZED: usize = 32;
 /// At most this many steps (engine runs) per minimization, for each of its two stages.
 pub const SHRINK_STEPS: usize = 1000;
+/// The page and `evidence.json` list at most this many failed cases (`cases.jsonl` has all).
+pub const MAX_LISTED_FAILURES: usize = 100;
 
 /// What to run.
 #[derive(Clone, Debug)]
@@ -60,6 +75,10 @@ pub struct Options {
     /// Generated cases per family (the garbage generator gets a fifth).
     pub cases: u32,
     pub seed: u64,
+    /// Stop after this many consecutive candidate failures (refusals aside); 0: never.
+    pub max_failures: u32,
+    /// A vendor's `cargo kani` log (`--kani-log`), parsed: the proofs section lists its verdicts.
+    pub kani_log: Option<kani::KaniLog>,
 }
 
 impl Default for Options {
@@ -70,6 +89,8 @@ impl Default for Options {
             cycles: FAMILIES.iter().collect(),
             cases: DEFAULT_CASES,
             seed: DEFAULT_SEED,
+            max_failures: DEFAULT_MAX_FAILURES,
+            kani_log: None,
         }
     }
 }
@@ -124,6 +145,34 @@ pub struct CaseRecord {
     pub traces: Option<(Trace, Option<Trace>)>,
 }
 
+impl CaseRecord {
+    fn new(p: &cases::Pending, j: Judged) -> CaseRecord {
+        let alarm = j.reference.as_ref().and_then(|r| r.alarm);
+        let cycle = registry::cycle_run_until(&p.program, &p.config, alarm.as_ref());
+        let (events, rules, ending) = match j.reference {
+            Some(r) => (r.events, r.rules, alarm.as_ref().map_or_else(|| "clean".to_string(), conformance::alarm_short)),
+            None => (0, BTreeSet::new(), "reference failed".to_string()),
+        };
+        let (name, origin, program, config) = (p.name.clone(), p.origin.clone(), p.program.clone(), p.config);
+        CaseRecord { name, origin, cycle, program, config, events, rules, ending, result: j.result, traces: j.traces }
+    }
+
+    /// Whether the candidate failed on it (a refusal aside: a quick, well-formed answer).
+    fn candidate_failed(&self) -> bool {
+        matches!(&self.result, CaseResult::Failure { engine, failure } if engine != "spec" && failure.kind != FailureKind::Refused)
+    }
+}
+
+/// Why a run stopped before its last case.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Stopped {
+    /// Consecutive candidate failures that stopped it (`--max-failures`).
+    pub consecutive_failures: u32,
+    /// Cases judged, and the most the run would have had.
+    pub judged: usize,
+    pub planned: usize,
+}
+
 /// The result of a certification run.
 pub struct Run {
     pub options: Options,
@@ -133,71 +182,66 @@ pub struct Run {
     pub candidate_argv: Option<Vec<String>>,
     /// How many times the candidate process was started (external candidates).
     pub candidate_starts: u64,
-    pub records: Vec<CaseRecord>,
+    /// When, with what build, on which host, against which executable.
+    pub identity: identity::Identity,
+    pub tally: tally::Tally,
+    /// The corpus programs' cases, with their traces.
+    pub corpus: Vec<CaseRecord>,
+    /// The first [`MAX_LISTED_FAILURES`] failed cases.
+    pub failures: Vec<CaseRecord>,
     pub families: Vec<FamilyRun>,
     pub groups: Vec<Group>,
+    /// Set when `--max-failures` stopped the run.
+    pub stopped: Option<Stopped>,
+    /// How each proof property was checked: the z3 lemmas run now, the imported Kani log.
+    pub proofs: proofs::Proofs,
     pub duration: Duration,
 }
 
 impl Run {
     pub fn cases(&self) -> usize {
-        self.records.len()
+        self.tally.cases
     }
 
     pub fn conforming(&self) -> usize {
-        self.records.iter().filter(|r| r.result.conforms()).count()
+        self.tally.conform
     }
 
     pub fn diverging(&self) -> usize {
-        self.records.iter().filter(|r| matches!(r.result, CaseResult::Diverge(_))).count()
+        self.tally.diverge
     }
 
     pub fn failures(&self) -> usize {
-        self.records.iter().filter(|r| matches!(r.result, CaseResult::Failure { .. })).count()
+        self.tally.fail
     }
 
-    /// Whether every case conformed.
+    /// Whether every case conformed and the run was not stopped.
     pub fn passed(&self) -> bool {
-        self.conforming() == self.cases()
+        self.conforming() == self.cases() && self.stopped.is_none()
     }
 
     /// Failures by kind.
     pub fn failures_by_kind(&self) -> BTreeMap<FailureKind, usize> {
-        let mut m = BTreeMap::new();
-        for r in &self.records {
-            if let CaseResult::Failure { failure, .. } = &r.result {
-                *m.entry(failure.kind).or_default() += 1;
-            }
-        }
-        m
+        self.tally.failures_by_kind.clone()
     }
 
     /// Per cycle run: cases, conform, diverge, fail.
     pub fn by_cycle(&self) -> BTreeMap<CycleRun, [usize; 4]> {
-        let mut m: BTreeMap<CycleRun, [usize; 4]> = BTreeMap::new();
-        for r in &self.records {
-            let c = m.entry(r.cycle).or_default();
-            c[0] += 1;
-            match r.result {
-                CaseResult::Conform => c[1] += 1,
-                CaseResult::Diverge(_) => c[2] += 1,
-                CaseResult::Failure { .. } => c[3] += 1,
-            }
-        }
-        m
+        self.tally.by_cycle.clone()
     }
 
     /// Per rule: cases whose reference trace exercises it, and divergences that name it.
     pub fn by_rule(&self) -> BTreeMap<Rule, (usize, usize)> {
-        let mut m: BTreeMap<Rule, (usize, usize)> = BTreeMap::new();
-        for r in &self.records {
-            for &rule in &r.rules {
-                m.entry(rule).or_default().0 += 1;
-            }
-            if let CaseResult::Diverge(d) = &r.result {
-                if let Some(rule) = d.rule {
-                    m.entry(rule).or_default().1 += 1;
-                }
+        self.tally.by_rule.clone()
+    }
+
+    /// Per rule: the built-in programs that illustrate it (`corpus::Program::rules`) and ran and
+    /// conformed in this run.
+    pub fn illustrated(&self) -> BTreeMap<Rule, usize> {
+        let mut m = BTreeMap::new();
+        for r in self.corpus.iter().filter(|r| r.result.conforms()) {
+            for &rule in corpus::find(&r.name).map_or(&[][..], |p| p.rules) {
+                *m.entry(rule).or_default() += 1;
             }
         }
         m
@@ -215,13 +259,18 @@ impl Run {
             self.failures(),
             self.duration.as_secs_f64()
         );
+        if let Some(st) = self.stopped {
+            s.push_str(&format!(
+                "STOPPED after {} consecutive candidate failures (--max-failures): {} of at most {} cases judged\n",
+                st.consecutive_failures, st.judged, st.planned
+            ));
+        }
         for (cycle, [n, ok, div, fail]) in self.by_cycle() {
             s.push_str(&format!("  {:<20} {n:>6} cases  {ok:>6} conform  {div:>5} diverge  {fail:>5} fail\n", cycle.label()));
         }
         for g in &self.groups {
-            let first = &self.records[g.cases[0]];
-            s.push_str(&format!("\n{} case(s) diverge like {}:\n", g.cases.len(), first.name));
-            if let CaseResult::Diverge(d) = &first.result {
+            s.push_str(&format!("\n{} case(s) diverge like {}:\n", g.count, g.first.name));
+            if let CaseResult::Diverge(d) = &g.first.result {
                 s.push_str(&format!("{d}\n"));
             }
             if let Some(m) = &g.minimized {
@@ -238,7 +287,7 @@ impl Run {
             }
         }
         for (kind, n) in self.failures_by_kind() {
-            let first = self.records.iter().find(|r| matches!(&r.result, CaseResult::Failure { failure, .. } if failure.kind == kind));
+            let first = self.failures.iter().find(|r| matches!(&r.result, CaseResult::Failure { failure, .. } if failure.kind == kind));
             if let Some(CaseRecord { name, result: CaseResult::Failure { engine, failure }, .. }) = first {
                 s.push_str(&format!("\n{n} case(s) fail with {kind}; first {name} ({engine}): {}\n", failure.message));
             }
@@ -268,89 +317,70 @@ impl std::fmt::Display for Error {
     }
 }
 
-/// Runs the certification: every case, then the minimization of each divergence group.
-pub fn run(options: &Options, progress: &mut dyn FnMut(Progress)) -> Result<Run, Error> {
+/// Runs the certification: every case, each written to `cases_out` as a line of
+/// `cases.jsonl` when judged, then the minimization of each divergence group.
+pub fn run(options: &Options, cases_out: &mut dyn Write, progress: &mut dyn FnMut(Progress)) -> Result<Run, Error> {
     let started = Instant::now();
     let candidate = match &options.candidate {
         None => None,
         Some(cmd) => Some(CandidateEngine::new(cmd, options.limits).map_err(|e| Error(format!("--candidate: {e}")))?),
     };
-    let imp = ImplEngine::default();
+    let identity = identity::Identity::capture(candidate.as_ref().map(CandidateEngine::argv));
     let engine: &dyn Engine = match &candidate {
         Some(c) => c,
-        None => &imp,
+        None => &ImplEngine,
     };
-    let (mut list, families) = cases::case_list(options);
-    let total = list.len();
-    let mut records = Vec::with_capacity(total);
-    let mut bad = 0;
-    for (i, p) in list.iter().enumerate() {
-        let phase = if matches!(p.origin, Origin::Corpus { .. }) { "corpus" } else { "generated" };
-        if i % 8 == 0 {
-            progress(Progress { phase, done: i, total, bad });
+    let mut cases = cases::Cases::new(options);
+    let (mut tally, mut corpus, mut failures, mut groups) = (tally::Tally::default(), Vec::new(), Vec::new(), Vec::new());
+    let (mut consecutive, mut stopped) = (0u32, None);
+    let write_error = |e: std::io::Error| Error(format!("cannot write cases.jsonl: {e}"));
+    while let Some(p) = cases.next() {
+        let in_corpus = matches!(p.origin, Origin::Corpus { .. });
+        if tally.cases % 8 == 0 {
+            let phase = if in_corpus { "corpus" } else { "generated" };
+            progress(Progress { phase, done: cases.drawn - 1, total: cases.total, bad: tally.cases - tally.conform });
         }
-        let (reference, cand, result) = judge(&SpecEngine, engine, &p.program, &p.config);
-        if !result.conforms() {
-            bad += 1;
+        let judged = if in_corpus { judge_keeping(&SpecEngine, engine, &p.program, &p.config) } else { judge(&SpecEngine, engine, &p.program, &p.config) };
+        let record = CaseRecord::new(&p, judged);
+        tally.add(&record);
+        let group = minimize::add(&mut groups, &record, p);
+        writeln!(cases_out, "{}", tally::case_line(&record, group)).map_err(write_error)?;
+        consecutive = if record.candidate_failed() { consecutive + 1 } else { 0 };
+        if matches!(record.result, CaseResult::Failure { .. }) && failures.len() < MAX_LISTED_FAILURES {
+            failures.push(CaseRecord { traces: None, ..record.clone() });
         }
-        let cycle = registry::cycle_run(&p.program, &p.config, reference.as_ref());
-        let mut rules = BTreeSet::new();
-        let (events, ending) = match &reference {
-            Some(t) => {
-                rules.extend(t.events.iter().map(|e| e.rule()));
-                rules.extend(t.alarm.map(|a| a.rule));
-                let ending = t.alarm.as_ref().map_or_else(|| "clean".to_string(), conformance::alarm_short);
-                (t.events.len(), ending)
-            }
-            None => (0, "reference failed".to_string()),
-        };
-        let traces = match (&p.origin, reference) {
-            (Origin::Corpus { .. }, Some(r)) => Some((r, cand)),
-            _ => None,
-        };
-        records.push(CaseRecord {
-            name: p.name.clone(),
-            origin: p.origin.clone(),
-            cycle,
-            program: p.program.clone(),
-            config: p.config,
-            events,
-            rules,
-            ending,
-            result,
-            traces,
-        });
+        if in_corpus {
+            corpus.push(record);
+        }
+        if options.max_failures > 0 && consecutive >= options.max_failures {
+            stopped = Some(Stopped { consecutive_failures: consecutive, judged: tally.cases, planned: cases.total });
+            break;
+        }
     }
-    progress(Progress { phase: "generated", done: total, total, bad });
-
-    let mut groups = minimize::groups(&records);
-    let to_minimize = groups.len().min(MAX_MINIMIZED);
-    for (n, g) in groups.iter_mut().take(MAX_MINIMIZED).enumerate() {
-        progress(Progress { phase: "minimizing", done: n, total: to_minimize, bad });
-        let first = g.cases[0];
-        g.minimized = minimize::minimize(engine, &records[first], &mut list[first], g.signature);
-    }
-    if to_minimize > 0 {
-        progress(Progress { phase: "minimizing", done: to_minimize, total: to_minimize, bad });
-    }
+    cases_out.flush().map_err(write_error)?;
+    let bad = tally.cases - tally.conform;
+    progress(Progress { phase: "generated", done: cases.total, total: cases.total, bad });
+    minimize::minimize_groups(engine, &mut groups, &mut |done, total| progress(Progress { phase: "minimizing", done, total, bad }));
     Ok(Run {
         options: options.clone(),
         candidate: engine.name().to_string(),
         candidate_argv: candidate.as_ref().map(|c| c.argv().to_vec()),
         candidate_starts: candidate.as_ref().map_or(0, CandidateEngine::starts),
-        records,
-        families,
+        identity,
+        tally,
+        corpus,
+        failures,
+        families: cases.runs,
         groups,
+        stopped,
+        proofs: proofs::Proofs::check(options.kani_log.clone()),
         duration: started.elapsed(),
     })
 }
 
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::engine::wrong::Panics;
-    use crate::engine::Failure;
 
     #[test]
     fn cycles_option() {
@@ -369,9 +399,17 @@ mod tests {
     }
 
     #[test]
-    fn panics_are_failures() {
-        let (_, _, r) = judge(&SpecEngine, &Panics, b"G0 X1", &Config::default());
-        assert_eq!(r, CaseResult::Failure { engine: "panics".into(), failure: Failure { kind: FailureKind::Panic, message: "boom".into() } });
-        assert_eq!(r.short(), "FAIL (panics panic)");
+    fn a_run_keeps_counts_not_cases() {
+        let o = Options { cycles: Options::parse_cycles("g92").unwrap(), cases: 30, ..Options::default() };
+        let mut lines = Vec::new();
+        let run = run(&o, &mut lines, &mut |_| {}).unwrap();
+        assert!(run.passed(), "{}", run.summary());
+        let text = String::from_utf8(lines).unwrap();
+        assert_eq!(text.lines().count(), run.cases());
+        let first: serde_json::Value = serde_json::from_str(text.lines().next().unwrap()).unwrap();
+        assert_eq!((first["name"].as_str(), first["result"].as_str()), (Some("g92_example"), Some("conform")));
+        assert_eq!(run.corpus.len(), 6);
+        assert!(run.corpus.iter().all(|r| r.traces.is_some()));
+        assert!(run.illustrated().get(&Rule::G92Example).is_some_and(|&n| n == 1));
     }
 }

@@ -1,7 +1,8 @@
 //! SVG toolpath plots: Z across, X up — X as a **radius** (the diameter of the trace halved), in
 //! mm (inch); the two axes are scaled independently so that thread depths stay visible.
 //!
-//! Rapids are dashed grey, feeds solid grey, thread moves coloured by the kind of their pass
+//! Rapids are dashed grey, feeds solid grey (arcs drawn as arcs: with the axes scaled
+//! independently a circle is an axis-aligned ellipse), thread moves coloured by the kind of their pass
 //! (rough, finish, spring), pull-outs (moves tagged with a pull-out rule) orange, the infeed
 //! point of each pass (where its first thread move starts) a dot. When the candidate's trace
 //! differs, each candidate move that differs from the reference at its index is drawn red and
@@ -66,6 +67,45 @@ struct Segment {
     first_thread_of_pass: bool,
 }
 
+/// An arc's geometry in mm with X as a radius: (centre z, centre r), radius, start angle, and the
+/// signed sweep (radians, negative clockwise as seen with Z right and X up; a full turn when the
+/// end is the start's direction). `None` for other moves.
+fn arc_geometry(seg: &Segment, scale: f64) -> Option<((f64, f64), f64, f64, f64)> {
+    let cw = match seg.m.kind {
+        MoveKind::ArcCw => true,
+        MoveKind::ArcCcw => false,
+        _ => return None,
+    };
+    let point = |(x, z): (i64, i64)| (z as f64 / scale, x as f64 / 2.0 / scale);
+    let (c, a, b) = (point((seg.m.cx, seg.m.cz)), point(seg.from), point(seg.to));
+    let radius = ((a.0 - c.0).powi(2) + (a.1 - c.1).powi(2)).sqrt();
+    let (start, end) = ((a.1 - c.1).atan2(a.0 - c.0), (b.1 - c.1).atan2(b.0 - c.0));
+    let tau = std::f64::consts::TAU;
+    let mut sweep = (end - start).rem_euclid(tau); // counter-clockwise
+    if sweep == 0.0 {
+        sweep = tau;
+    }
+    Some((c, radius, start, if cw { sweep - tau } else { sweep }))
+}
+
+/// The points that bound a segment: its ends, and for an arc the quadrant points its sweep
+/// passes (mm, (z, r)).
+fn extent(seg: &Segment, scale: f64) -> Vec<(f64, f64)> {
+    let point = |(x, z): (i64, i64)| (z as f64 / scale, x as f64 / 2.0 / scale);
+    let mut out = vec![point(seg.from), point(seg.to)];
+    if let Some((c, radius, start, sweep)) = arc_geometry(seg, scale) {
+        let quarter = std::f64::consts::FRAC_PI_2;
+        for k in 0..4 {
+            let angle = quarter * f64::from(k);
+            let along = if sweep >= 0.0 { (angle - start).rem_euclid(std::f64::consts::TAU) } else { (start - angle).rem_euclid(std::f64::consts::TAU) };
+            if along < sweep.abs() {
+                out.push((c.0 + radius * angle.cos(), c.1 + radius * angle.sin()));
+            }
+        }
+    }
+    out
+}
+
 fn segments(trace: &Trace, start: (i64, i64)) -> Vec<Segment> {
     let mut out = Vec::new();
     let mut at = start;
@@ -77,6 +117,7 @@ fn segments(trace: &Trace, start: (i64, i64)) -> Vec<Segment> {
                 pass = Some(p.kind);
                 pass_has_thread = false;
             }
+            Event::Dwell(_) | Event::Spindle(_) => {}
             Event::Move(m) => {
                 let first = m.kind == MoveKind::Thread && !pass_has_thread;
                 if m.kind == MoveKind::Thread {
@@ -95,8 +136,8 @@ fn segments(trace: &Trace, start: (i64, i64)) -> Vec<Segment> {
 fn differs(reference: &Trace, candidate: &Trace, index: usize) -> bool {
     match (reference.events.get(index), candidate.events.get(index)) {
         (Some(Event::Move(r)), Some(Event::Move(c))) => {
-            (r.kind, r.x, r.z, r.feed, r.angle, r.lead_change, r.lead_change_angle, r.lead_floor)
-                != (c.kind, c.x, c.z, c.feed, c.angle, c.lead_change, c.lead_change_angle, c.lead_floor)
+            (r.kind, r.x, r.z, r.feed, r.cx, r.cz, r.angle, r.lead_change, r.lead_change_angle, r.lead_floor)
+                != (c.kind, c.x, c.z, c.feed, c.cx, c.cz, c.angle, c.lead_change, c.lead_change_angle, c.lead_floor)
         }
         (Some(Event::Pass(r)), Some(Event::Pass(c))) => (r.index, r.kind, r.diameter_depth) != (c.index, c.kind, c.diameter_depth),
         (None, None) => false,
@@ -141,19 +182,17 @@ pub fn svg(title: &str, config: &Config, reference: &Trace, candidate: Option<&T
     // divergent moves.
     let first_pass = reference.events.iter().position(|e| matches!(e, Event::Pass(_)));
     let in_view: Vec<&Segment> = refs.iter().filter(|s| first_pass.is_none_or(|p| s.index > p)).collect();
-    let mut points: Vec<(i64, i64)> = Vec::new();
-    match in_view.first() {
-        Some(first) => points.push(first.from),
-        None => points.push(start),
+    let mut points: Vec<(f64, f64)> = Vec::new();
+    if in_view.is_empty() {
+        points.push((axial(start.1), radius(start.0)));
     }
-    points.extend(in_view.iter().map(|s| s.to));
-    points.extend(cands.iter().flat_map(|s| [s.from, s.to]));
+    points.extend(in_view.iter().copied().chain(cands.iter()).flat_map(|s| extent(s, scale)));
     let (mut z0, mut z1, mut r0, mut r1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-    for &(x, z) in &points {
-        z0 = z0.min(axial(z));
-        z1 = z1.max(axial(z));
-        r0 = r0.min(radius(x));
-        r1 = r1.max(radius(x));
+    for &(z, r) in &points {
+        z0 = z0.min(z);
+        z1 = z1.max(z);
+        r0 = r0.min(r);
+        r1 = r1.max(r);
     }
     let pad = |lo: f64, hi: f64| {
         let p = ((hi - lo) * 0.05).max(0.5 / scale.sqrt());
@@ -164,6 +203,20 @@ pub fn svg(title: &str, config: &Config, reference: &Trace, candidate: Option<&T
     let (pw, ph) = (WIDTH - LEFT - RIGHT, HEIGHT - TOP - BOTTOM);
     let px = |z: i64| LEFT + (axial(z) - z0) / (z1 - z0) * pw;
     let py = |x: i64| TOP + ph - (radius(x) - r0) / (r1 - r0) * ph;
+    // A segment's shape: a line, or an elliptical arc (G02 clockwise on the page, as in the
+    // register's view; the large-arc flag from the sweep).
+    let shape = |seg: &Segment| -> (&'static str, String) {
+        let (x1, y1, x2, y2) = (px(seg.from.1), py(seg.from.0), px(seg.to.1), py(seg.to.0));
+        match arc_geometry(seg, scale) {
+            Some((_, radius, _, sweep)) => {
+                let (rx, ry) = (radius / (z1 - z0) * pw, radius / (r1 - r0) * ph);
+                let large = u8::from(sweep.abs() > std::f64::consts::PI);
+                let clockwise = u8::from(sweep < 0.0);
+                ("path", format!(r#"d="M {x1:.2} {y1:.2} A {rx:.2} {ry:.2} 0 {large} {clockwise} {x2:.2} {y2:.2}" fill="none""#))
+            }
+            None => ("line", format!(r#"x1="{x1:.2}" y1="{y1:.2}" x2="{x2:.2}" y2="{y2:.2}""#)),
+        }
+    };
     let unit = reference.grid.unit_name().to_lowercase();
 
     let mut s = String::new();
@@ -173,7 +226,11 @@ pub fn svg(title: &str, config: &Config, reference: &Trace, candidate: Option<&T
         t = escape(title)
     );
     let _ = writeln!(s, r#"<rect width="{WIDTH}" height="{HEIGHT}" fill="white"/>"#);
-    let _ = writeln!(s, r#"<text x="{LEFT}" y="18" font-size="14" font-weight="bold">{}</text>"#, escape(title));
+    let _ = write!(s, r#"<text x="{LEFT}" y="18" font-size="14" font-weight="bold">{}"#, escape(title));
+    if let Some(a) = &reference.alarm {
+        let _ = write!(s, r#"<tspan class="alarm" fill="{DIVERGENT}"> — the trace ends in {}</tspan>"#, escape(&Trace::alarm_line(a)));
+    }
+    s.push_str("</text>\n");
     let _ = writeln!(
         s,
         r##"<text x="{LEFT}" y="34" fill="#444">Z ({unit}) across, X as radius ({unit}) up; axes scaled independently{clip}</text>"##,
@@ -211,16 +268,17 @@ pub fn svg(title: &str, config: &Config, reference: &Trace, candidate: Option<&T
     // The reference path, clipped to the view.
     let _ = writeln!(s, r#"<g clip-path="url(#{})">"#, clip_id(title));
     for seg in &refs {
-        let (x1, y1, x2, y2) = (px(seg.from.1), py(seg.from.0), px(seg.to.1), py(seg.to.0));
         let (colour, extra, class) = match seg.m.kind {
             MoveKind::Rapid => (RAPID, r#" stroke-dasharray="5 4""#, "rapid"),
-            MoveKind::Feed | MoveKind::ArcCw | MoveKind::ArcCcw => (FEED, "", "feed"),
+            MoveKind::Feed => (FEED, "", "feed"),
+            MoveKind::ArcCw | MoveKind::ArcCcw => (FEED, "", "arc"),
             MoveKind::Thread if is_pullout(seg.m.rule) => (PULLOUT, "", "pullout"),
             MoveKind::Thread => (pass_colour(seg.pass), "", "thread"),
         };
+        let (tag, geometry) = shape(seg);
         let _ = writeln!(
             s,
-            r#"<line class="{class}" x1="{x1:.2}" y1="{y1:.2}" x2="{x2:.2}" y2="{y2:.2}" stroke="{colour}" stroke-width="1.4"{extra}><title>event {} {}</title></line>"#,
+            r#"<{tag} class="{class}" {geometry} stroke="{colour}" stroke-width="1.4"{extra}><title>event {} {}</title></{tag}>"#,
             seg.index,
             escape(&Trace::event_line(reference.grid, &Event::Move(seg.m)))
         );
@@ -239,13 +297,10 @@ pub fn svg(title: &str, config: &Config, reference: &Trace, candidate: Option<&T
     }
     // The candidate's divergent moves.
     for seg in &cands {
+        let (tag, geometry) = shape(seg);
         let _ = writeln!(
             s,
-            r#"<line class="divergent" x1="{:.2}" y1="{:.2}" x2="{:.2}" y2="{:.2}" stroke="{DIVERGENT}" stroke-width="3.5" stroke-linecap="round"><title>candidate event {}: {}</title></line>"#,
-            px(seg.from.1),
-            py(seg.from.0),
-            px(seg.to.1),
-            py(seg.to.0),
+            r#"<{tag} class="divergent" {geometry} stroke="{DIVERGENT}" stroke-width="3.5" stroke-linecap="round"><title>candidate event {}: {}</title></{tag}>"#,
             seg.index,
             escape(&Trace::event_line(reference.grid, &Event::Move(seg.m)))
         );
@@ -311,7 +366,15 @@ mod tests {
         assert_eq!(svg.matches("class=\"pullout\"").count(), 4, "one pull-out per cycle");
         assert_eq!(svg.matches("class=\"infeed\"").count(), 4, "one infeed point per pass");
         assert!(svg.contains("stroke-dasharray"));
-        assert!(!svg.contains("class=\"divergent\""));
+        assert!(!svg.contains("class=\"divergent\"") && !svg.contains("class=\"alarm\""));
+    }
+
+    #[test]
+    fn a_trace_that_ends_in_an_alarm_says_so() {
+        let p = crate::corpus::find("g78_example").unwrap();
+        let t = cycle_spec::expand(p.text.as_bytes(), &p.config());
+        let svg = svg("g78_example", &p.config(), &t, None, None);
+        assert!(svg.contains("the trace ends in (ALARM 2002 LINE 3 WORD P RULE G78.MODE)"), "{svg}");
     }
 
     #[test]
@@ -328,6 +391,39 @@ mod tests {
         // point only for the changed one.
         assert_eq!(svg.matches("class=\"divergent\"").count(), 1, "{svg}");
         assert!(svg.contains(&format!("first divergence: event {i}, rule G92.PULLOUT")));
+    }
+
+    /// Example 1's two arcs are drawn as arcs: the ball end G03 counter-clockwise (sweep flag 0)
+    /// and the fillet G02 clockwise (1), each a quarter circle or less, in the semi-finish pass
+    /// and in G70; the view holds the ball end's whole sweep.
+    #[test]
+    fn arcs_are_drawn_as_arcs() {
+        let program = include_str!("../../../corpus/g71_example.nc");
+        let config = Config::default();
+        let t = cycle_spec::expand(program.as_bytes(), &config);
+        let svg = svg("g71_example", &config, &t, None, None);
+        let arcs: Vec<&str> = svg.lines().filter(|l| l.starts_with("<path class=\"arc\"")).collect();
+        assert_eq!(arcs.len(), 4, "{svg}");
+        assert_eq!(arcs.iter().filter(|l| l.contains(" 0 0 0 ")).count(), 2, "two G03, small arcs: {arcs:?}");
+        assert_eq!(arcs.iter().filter(|l| l.contains(" 0 0 1 ")).count(), 2, "two G02, small arcs: {arcs:?}");
+        assert_eq!(svg.matches("<line class=").count() + arcs.len(), t.moves().count());
+    }
+
+    /// A quadrant point inside an arc's sweep bounds the view; the ends alone would clip it.
+    #[test]
+    fn an_arc_extent_includes_its_quadrant_points() {
+        // A quarter from X0 Z0 counter-clockwise about X0 Z−5 to X10 Z−5 (radius 5): its ends
+        // bound it.
+        let m = Move::arc(false, 10_000, -5_000, 0, -5_000, 1, Rule::ArcIk);
+        let seg = Segment { index: 0, from: (0, 0), to: (10_000, -5_000), m, pass: None, first_thread_of_pass: false };
+        let e = extent(&seg, 1000.0);
+        assert!(e.iter().all(|&(z, r)| (-5.0..=0.0).contains(&z) && (0.0..=5.0 + 1e-9).contains(&r)), "{e:?}");
+        // A half circle counter-clockwise from Z0 to Z−10 about Z−5 on the axis passes over the
+        // top (radius 5), which neither end reaches.
+        let half = Move::arc(false, 0, -10_000, 0, -5_000, 1, Rule::ArcIk);
+        let seg = Segment { index: 0, from: (0, 0), to: (0, -10_000), m: half, pass: None, first_thread_of_pass: false };
+        let top = extent(&seg, 1000.0).into_iter().map(|(_, r)| r).fold(f64::MIN, f64::max);
+        assert!((top - 5.0).abs() < 1e-9, "the half circle's top bounds the view: {top}");
     }
 
     #[test]

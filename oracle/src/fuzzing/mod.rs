@@ -27,7 +27,7 @@ pub use input::CycleInput;
 
 use crate::campaign::{judge, Verdict};
 use crate::engine::{Engine, ImplEngine, SpecEngine};
-use crate::readback::{self, Motion};
+use crate::readback::{self, Printed};
 use cycle_vocab::{Alarm, Config, Dialect, Grid, Increment, Rule, Units};
 
 /// A fuzz target.
@@ -163,7 +163,7 @@ pub fn parse_blocks(data: &[u8]) -> Result<(), String> {
     }
     // Both engines: no panic, a rejection is an alarm on a line of the program, and they agree.
     for config in parse_configs() {
-        let (reference, verdict) = judge((&SpecEngine, &ImplEngine::default()), data, &config);
+        let (reference, verdict) = judge((&SpecEngine, &ImplEngine), data, &config);
         if let Some(a) = reference.and_then(|t| t.alarm) {
             if !on_a_line(a.line) {
                 return Err(format!("alarm {a:?} names line {} of a {lines}-line program", a.line));
@@ -188,7 +188,7 @@ pub(crate) fn verdict_ok(verdict: Verdict, program: &[u8], config: &Config) -> R
 /// conformance relation.
 pub fn diff_spec_impl(data: &[u8]) -> Result<(), String> {
     let case = CycleInput::from_bytes(data).case();
-    let (_, verdict) = judge((&SpecEngine, &ImplEngine::default()), &case.program, &case.config);
+    let (_, verdict) = judge((&SpecEngine, &ImplEngine), &case.program, &case.config);
     verdict_ok(verdict, &case.program, &case.config).map_err(|e| format!("family {}\n{e}", case.family))
 }
 
@@ -200,7 +200,7 @@ pub fn gcode_roundtrip(data: &[u8]) -> Result<(), String> {
 
 /// The round trip of `program` under `config`.
 pub(crate) fn gcode_roundtrip_case(program: &[u8], config: &Config) -> Result<(), String> {
-    let engines: [&dyn Engine; 2] = [&SpecEngine, &ImplEngine::default()];
+    let engines: [&dyn Engine; 2] = [&SpecEngine, &ImplEngine];
     for engine in engines {
         let trace = engine.expand(program, config);
         let text = trace.to_gcode();
@@ -209,9 +209,9 @@ pub(crate) fn gcode_roundtrip_case(program: &[u8], config: &Config) -> Result<()
         if grid != trace.grid {
             return Err(format!("grid {grid:?} read back as {:?}\n{}", trace.grid, context()));
         }
-        let expected: Vec<Motion> = trace.moves().map(Motion::from).collect();
+        let expected: Vec<Printed> = trace.events.iter().filter_map(Printed::of).collect();
         if let Some(i) = (0..expected.len().max(motions.len())).find(|&i| expected.get(i) != motions.get(i)) {
-            return Err(format!("motion {i}: {:?} read back as {:?}\n{}", expected.get(i), motions.get(i), context()));
+            return Err(format!("event {i}: {:?} read back as {:?}\n{}", expected.get(i), motions.get(i), context()));
         }
     }
     Ok(())

@@ -10,6 +10,10 @@
 //!   lead-in, J/K, multi-start, the pass bound, and words just outside their ranges.
 //! - [`g162`]: G162 programs under `nc201` (M004), valid and invalid.
 //! - [`thread_moves`]: G32 / G33 / G34 programs (M003), valid and invalid.
+//! - [`single_cut`]: G90 / G94 single cutting cycles (M003), valid and invalid.
+//! - [`contour`]: G71 / G72 stock removal over random monotone contours of lines and arcs, then
+//!   G70, and G70 alone (M003), with the register's contour, arc, G50 and nose-radius alarms at
+//!   a controlled rate.
 //! - [`garbage`]: random bytes, random word soup, and the corpus with a few bytes changed.
 //!
 //! Every structured case is built from a fixed-length vector of random *knobs* (`u32`s) by a
@@ -23,6 +27,7 @@
 //! is only reached through a small `max_passes` — so a case typically runs in well under a
 //! millisecond.
 
+pub mod contour;
 pub mod g162;
 pub mod g92;
 pub mod garbage;
@@ -39,7 +44,7 @@ use std::fmt;
 /// A generated case: program text and configuration.
 #[derive(Clone, PartialEq, Eq)]
 pub struct Case {
-    /// The generator: a registry family's name (`g92`, `g76`, `g78`, `f76`, `g162`, `g32`) or a
+    /// The generator: a registry family's name (`g92`, `g76`, …, `g71`, `g72`, `g70`) or a
     /// garbage generator's (`bytes`, `soup`, `mutant`).
     pub family: &'static str,
     pub program: Vec<u8>,

@@ -6,7 +6,7 @@ use proptest::strategy::ValueTree;
 use proptest::test_runner::{Config as PtConfig, RngAlgorithm, TestRng, TestRunner};
 
 /// `KNOBS` knobs from a xorshift state.
-fn random_knobs(s: &mut u64) -> Vec<u32> {
+pub(super) fn random_knobs(s: &mut u64) -> Vec<u32> {
     (0..KNOBS)
         .map(|_| {
             *s ^= *s << 13;
@@ -134,7 +134,7 @@ fn dice_zero_is_ordinary() {
 /// Generator statistics, for tuning the weights: `cargo test -p cycle-oracle --lib
 /// family_statistics -- --ignored --nocapture` prints, per generator, the time per case, the
 /// event counts and how the reference trace ends; `SHOW=G92.TAPER` also prints three cases of
-/// each ending that contains the text.
+/// each ending that contains the text; `FAMILY=g71` runs only that generator.
 mod stats {
     use super::*;
 
@@ -142,8 +142,9 @@ mod stats {
     #[ignore]
     fn family_statistics() {
         let show = std::env::var("SHOW").ok();
+        let only = std::env::var("FAMILY").ok();
         let generators = FAMILIES.iter().map(|f| (f.name, f.strategy())).chain([("garbage", garbage::strategy())]);
-        for (name, s) in generators {
+        for (name, s) in generators.filter(|(name, _)| only.as_deref().is_none_or(|o| o == *name)) {
             let n = 2000;
             let t0 = std::time::Instant::now();
             let (mut events, mut longest) = (0, 0);

@@ -23,6 +23,9 @@ pub struct Spelling {
     pub leading_zeros: bool,
     /// `X5.`: a point after every whole length.
     pub trailing_point: bool,
+    /// `X58.7000000`: zeros after the last digit of every length with a point, past the grid's
+    /// places (a value, not a precision error: the reader scales by the digits beyond the grid).
+    pub trailing_zeros: bool,
     /// `X+.5`: a plus sign and no zero before every positive length below one.
     pub plus_point: bool,
     /// `R-0`: every zero length with a minus sign.
@@ -52,6 +55,8 @@ impl Spelling {
             comments: d.chance(20),
             crlf: d.chance(20),
             bom: d.chance(BOM_PERCENT),
+            // Drawn last: the earlier spellings keep their knobs.
+            trailing_zeros: d.chance(20),
         }
     }
 
@@ -65,8 +70,9 @@ impl Spelling {
         } else {
             text
         };
-        if self.trailing_point && !text.contains('.') {
-            format!("{text}.")
+        let text = if self.trailing_point && !text.contains('.') { format!("{text}.") } else { text };
+        if self.trailing_zeros && text.contains('.') {
+            format!("{text}000000")
         } else {
             text
         }
@@ -266,6 +272,7 @@ mod tests {
         for (spelling, length, block) in [
             (Spelling { leading_zeros: true, ..Spelling::default() }, "7.5", "G000 X-00.5\n"),
             (Spelling { trailing_point: true, ..Spelling::default() }, "5.", "G0 X-.5\n"),
+            (Spelling { trailing_zeros: true, ..Spelling::default() }, "7.5000000", "G0 X-.5\n"),
             (Spelling { plus_point: true, ..Spelling::default() }, "+.5", "G0 X-.5\n"),
             (Spelling { minus_zero: true, ..Spelling::default() }, "-0", "G0 X-.5\n"),
             (Spelling { lower_case: true, ..Spelling::default() }, "7.5", "g0 x-.5\n"),

@@ -2,7 +2,7 @@
 //! (G162.FORMAT) and missing words in the register's order.
 
 use super::{expand, G162Block};
-use crate::family::{BlockIn, Code, Family, Kind, State, Words};
+use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words};
 use crate::words::{alarm, Read, F, N, X};
 use cycle_vocab::{Alarm, AlarmCode, Dialect, Rule};
 
@@ -43,7 +43,7 @@ impl Family for G162 {
 
     /// G162 (M004): F sets the modal feed; without F the modal feed is the lead (G162.F).
     /// Missing words in the register's order: F, H, P/Q (a pair), X, Z.
-    fn execute(&mut self, st: &mut State, b: &BlockIn) -> Result<(), Alarm> {
+    fn execute(&mut self, st: &mut State, b: &BlockIn, _: &mut Source) -> Result<(), Alarm> {
         let (v, line) = (b.values, b.line);
         let missing = |word: u8, rule: Rule| Err(alarm(AlarmCode::MissingWord, word, rule, line));
         st.take_feed(v);

@@ -2,7 +2,7 @@
 //! interpreter: one-shot codes whose first block is kept per code (G76.FORMAT).
 
 use super::{check_p_digits, expand, Cycle, FirstBlock, SecondBlock};
-use crate::family::{BlockIn, Code, Family, Kind, State, Words, GSK_FANUC};
+use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
 use crate::lex::Number;
 use crate::words::{alarm, integer, Read, F, I_TPI, N, U, W, X, Z};
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Rule};
@@ -79,7 +79,7 @@ impl Family for Multipass {
         }
     }
 
-    fn execute(&mut self, st: &mut State, b: &BlockIn) -> Result<(), Alarm> {
+    fn execute(&mut self, st: &mut State, b: &BlockIn, _: &mut Source) -> Result<(), Alarm> {
         let cycle = cycle_of(b.kind.g);
         if b.kind.axes {
             self.second_block(st, cycle, b)

@@ -12,19 +12,44 @@
 //! - a timeout, a crash, garbage, an oversized answer become that case's [`Failure`]; the child
 //!   is killed and a fresh one started for the next case, so a campaign always goes on;
 //! - stdin and stdout are served by their own threads, so a child that neither reads nor writes
-//!   cannot block the harness; the last few KiB of its stderr are kept for crash reports.
+//!   cannot block the harness; the last few KiB of its stderr are kept for crash reports;
+//! - the child runs in a process group of its own, killed whole — with anything it started —
+//!   after a failure, at the end of the run and on SIGINT/SIGTERM ([`crate::reaper`]).
 
 use crate::engine::{Engine, Failure, FailureKind};
 use cycle_vocab::text::Trace;
 use cycle_vocab::Config;
 use std::io::{BufRead, BufReader, Read, Write};
+use std::os::unix::process::CommandExt as _;
 use std::process::{Child, ChildStdout, Command, Stdio};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
-/// The protocol's schema version, sent in every request.
+mod split;
+pub use split::split_command;
+
+/// The protocol's first schema version: the thread cycles' events (rapids, feeds, thread moves,
+/// ROUGH/FINISH/SPRING passes).
 pub const SCHEMA: &str = "cyclecheck-candidate/1";
+/// The second: version 1 and arcs (`arc_cw`, `arc_ccw` with `cx`, `cz`), SEMI passes and the
+/// contour alarms (`BLOCK_NOT_FOUND`, `CONTOUR_TOO_LONG`) — what G02/G03 and G70–G72 produce.
+pub const SCHEMA_2: &str = "cyclecheck-candidate/2";
+
+/// The schema a program's request carries: version 2 when a block of it writes G02, G03, G70,
+/// G71 or G72 (read with the reference's lexer, up to its first lexing alarm), else version 1 —
+/// so a candidate that speaks only version 1 still runs every thread family, and refuses
+/// (never silently misreads) the programs whose traces need version 2.
+pub fn schema_for(program: &[u8]) -> &'static str {
+    let v2 = cycle_spec::lex::blocks(program).map_while(Result::ok).any(|b| {
+        b.g_codes().any(|g| !g.point && !g.negative && matches!(g.to_string().as_str(), "2" | "3" | "70" | "71" | "72"))
+    });
+    if v2 {
+        SCHEMA_2
+    } else {
+        SCHEMA
+    }
+}
 
 /// How much of the child's stderr is kept for reports (the last bytes).
 const STDERR_TAIL: usize = 4096;
@@ -42,8 +67,9 @@ pub struct Limits {
 }
 
 impl Limits {
-    /// 10 s per case.
-    pub const DEFAULT_TIMEOUT: Duration = Duration::from_secs(10);
+    /// 10 s per case, in ms.
+    pub const DEFAULT_TIMEOUT_MS: u64 = 10_000;
+    pub const DEFAULT_TIMEOUT: Duration = Duration::from_millis(Limits::DEFAULT_TIMEOUT_MS);
     /// 64 MiB per answer (a trace of ~500 000 events).
     pub const DEFAULT_MAX_OUTPUT: usize = 64 << 20;
 }
@@ -54,81 +80,12 @@ impl Default for Limits {
     }
 }
 
-/// Splits a command line into words as a POSIX shell would, without any expansion: blanks
-/// separate words; `'…'` is literal; in `"…"` a backslash escapes `"`, `\`, `$` and `` ` ``;
-/// outside quotes a backslash escapes the next character. No variables, globs, pipes or
-/// redirections: `$`, `*`, `|`, `>` are ordinary characters.
-pub fn split_command(line: &str) -> Result<Vec<String>, String> {
-    let mut words = Vec::new();
-    let mut word = String::new();
-    let mut in_word = false;
-    let mut chars = line.chars();
-    while let Some(c) = chars.next() {
-        match c {
-            ' ' | '\t' | '\n' | '\r' => {
-                if in_word {
-                    words.push(std::mem::take(&mut word));
-                    in_word = false;
-                }
-            }
-            '\'' => {
-                in_word = true;
-                loop {
-                    match chars.next() {
-                        Some('\'') => break,
-                        Some(c) => word.push(c),
-                        None => return Err("unterminated single quote".to_string()),
-                    }
-                }
-            }
-            '"' => {
-                in_word = true;
-                loop {
-                    match chars.next() {
-                        Some('"') => break,
-                        Some('\\') => match chars.next() {
-                            Some(c @ ('"' | '\\' | '$' | '`')) => word.push(c),
-                            Some('\n') => {}
-                            Some(c) => {
-                                word.push('\\');
-                                word.push(c);
-                            }
-                            None => return Err("unterminated double quote".to_string()),
-                        },
-                        Some(c) => word.push(c),
-                        None => return Err("unterminated double quote".to_string()),
-                    }
-                }
-            }
-            '\\' => {
-                in_word = true;
-                match chars.next() {
-                    Some('\n') => {}
-                    Some(c) => word.push(c),
-                    None => return Err("a backslash ends the command".to_string()),
-                }
-            }
-            c => {
-                in_word = true;
-                word.push(c);
-            }
-        }
-    }
-    if in_word {
-        words.push(word);
-    }
-    if words.is_empty() {
-        return Err("empty command".to_string());
-    }
-    Ok(words)
-}
-
 /// The request line for case `id` (without the newline). The program goes as `program` when it
 /// is UTF-8, else as `program_hex` (two lowercase hex digits per byte). Every parameter is
 /// named: those the configuration leaves unset with the reference's defaults.
 pub fn request(id: u64, program: &[u8], config: &Config) -> String {
     let config = Config { params: cycle_spec::config::params(config).as_set(), ..*config };
-    let mut req = serde_json::json!({ "schema": SCHEMA, "id": id, "config": config });
+    let mut req = serde_json::json!({ "schema": schema_for(program), "id": id, "config": config });
     match std::str::from_utf8(program) {
         Ok(text) => req["program"] = text.into(),
         Err(_) => req["program_hex"] = program.iter().map(|b| format!("{b:02x}")).collect::<String>().into(),
@@ -237,10 +194,12 @@ impl Running {
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
             .stderr(Stdio::piped())
+            .process_group(0)
             .spawn()
             .map_err(|e| Failure { kind: FailureKind::Spawn, message: format!("cannot start {:?}: {e}", argv[0]) })?;
+        crate::reaper::register_group(child.id());
         let (Some(mut stdin), Some(stdout), Some(mut stderr_pipe)) = (child.stdin.take(), child.stdout.take(), child.stderr.take()) else {
-            let _ = child.kill();
+            crate::reaper::kill_group(child.id());
             let _ = child.wait();
             return Err(Failure { kind: FailureKind::Spawn, message: "no pipes to the child".to_string() });
         };
@@ -280,10 +239,10 @@ impl Running {
         }
     }
 
-    /// Kills the child (if still running) and reaps it.
+    /// Kills the child's process group (the child and whatever it started) and reaps the child.
     fn stop(mut self) {
         self.requests = None;
-        let _ = self.child.kill();
+        crate::reaper::kill_group(self.child.id());
         let _ = self.child.wait();
     }
 }
@@ -361,7 +320,7 @@ fn crash(running: &mut Running, why: &str) -> Failure {
     let mut status = "still running".to_string();
     for _ in 0..20 {
         if let Ok(Some(s)) = running.child.try_wait() {
-            status = format!("exit {s}");
+            status = s.to_string();
             break;
         }
         std::thread::sleep(Duration::from_millis(10));
@@ -397,7 +356,8 @@ impl Engine for CandidateEngine {
 }
 
 impl Drop for CandidateEngine {
-    /// Closes the child's stdin (its signal to exit), gives it a moment, then kills it.
+    /// Closes the child's stdin (its signal to exit), gives it a moment, then kills its process
+    /// group: the child if it is still running, and whatever it left behind.
     fn drop(&mut self) {
         let state = self.state.get_mut().unwrap_or_else(std::sync::PoisonError::into_inner);
         if let Some(mut r) = state.running.take() {
@@ -418,19 +378,6 @@ mod tests {
     use super::*;
 
     #[test]
-    fn splits_like_a_shell_without_expansion() {
-        let s = |l: &str| split_command(l).unwrap();
-        assert_eq!(s("python3 examples/g92.py --plant-bug"), ["python3", "examples/g92.py", "--plant-bug"]);
-        assert_eq!(s("  a\t 'b c'  \"d \\\" e\" f\\ g "), ["a", "b c", "d \" e", "f g"]);
-        assert_eq!(s("echo $HOME * | > x; rm"), ["echo", "$HOME", "*", "|", ">", "x;", "rm"]);
-        assert_eq!(s("'it''s' \"a\\nb\" ''"), ["its", "a\\nb", ""]);
-        assert_eq!(s("x\\\ny"), ["xy"]);
-        for bad in ["", "   ", "'open", "\"open", "trailing\\"] {
-            assert!(split_command(bad).is_err(), "{bad:?}");
-        }
-    }
-
-    #[test]
     fn requests_carry_schema_id_program_and_config() {
         let r: serde_json::Value = serde_json::from_str(&request(7, b"G0 X1\n", &Config::default())).unwrap();
         assert_eq!(r["schema"], SCHEMA);
@@ -442,6 +389,23 @@ mod tests {
         let r: serde_json::Value = serde_json::from_str(&request(1, b"G0\xff", &Config::default())).unwrap();
         assert_eq!(r["program_hex"], "4730ff");
         assert!(r.get("program").is_none());
+    }
+
+    /// Version 2 exactly for the programs that write an arc or a contour cycle.
+    #[test]
+    fn the_schema_follows_the_program() {
+        for (program, schema) in [
+            (&b"G0 X1\nG92 X1 Z-1 F1\nG90 X1 Z-2 I-1 F1\n"[..], SCHEMA),
+            (b"G0 X1 Z1\nG02 X2 Z0 R1 F1\n", SCHEMA_2),
+            (b"g3 x2 z0 i1 f1\n", SCHEMA_2),
+            (b"G71 U1 R1\n", SCHEMA_2),
+            (b"G70 P1 Q2\n", SCHEMA_2),
+            (b"G72 W1\n", SCHEMA_2),
+            (b"G2.0 X1\n", SCHEMA),
+            (b"G32 X1 Z-1 F1\n#\nG02 X1 R1\n", SCHEMA),
+        ] {
+            assert_eq!(schema_for(program), schema, "{}", String::from_utf8_lossy(program));
+        }
     }
 
     #[test]

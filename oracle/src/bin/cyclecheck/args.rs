@@ -1,0 +1,282 @@
+//! The command line (clap, derive). Every default shown by `--help` is the constant the code
+//! uses (`oracle/tests/cli.rs` compares them).
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use cycle_oracle::candidate::Limits;
+use cycle_oracle::certify::{self, identity::LONG_VERSION};
+use cycle_oracle::{gate, nightly, registry};
+use cycle_vocab::{Config, Dialect, Increment, Units};
+use std::path::PathBuf;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "cyclecheck",
+    version = LONG_VERSION,
+    about = "The lathe canned-cycle reference: expand programs, compare the production expander or your own with the reference spec, and write certification evidence.",
+    after_help = "Exit status: 0 success / the engines conform (an alarm both engines raise conforms); 1 the engines diverge or the candidate fails (diff, corpus, certify), a gate step or a fuzz campaign fails; 2 bad input (the command line, an unreadable file, an unusable --out) — and for expand, a program that ends in an alarm; 130 interrupted (SIGINT/SIGTERM).\nREADME.md is the guide; docs/CANDIDATE.md the candidate protocol."
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Expand a program into its trace (canonical G-code or JSON), written as it is produced.
+    Expand(ExpandArgs),
+    /// Compare the reference spec with the production expander (or a candidate) on programs.
+    Diff(DiffArgs),
+    /// Run every built-in program (the manuals' examples, the feature programs) through spec and impl.
+    Corpus(CorpusArgs),
+    /// Write the certification evidence bundle: the corpus and a generated campaign, spec vs the candidate.
+    Certify(CertifyArgs),
+    /// The pre-merge gate: corpus, campaign, fuzz replay, cargo test (run from the repository root).
+    Gate(GateArgs),
+    /// The nightly fuzz campaign with cargo-fuzz; or write the seeds; or decode a fuzz input (run from the repository root).
+    Fuzz(FuzzArgs),
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EngineArg {
+    Spec,
+    Impl,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FormatArg {
+    Gcode,
+    Json,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CorpusFormat {
+    Text,
+    Json,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DialectArg {
+    Gsk,
+    Fanuc,
+    Nc201,
+}
+
+impl From<Dialect> for DialectArg {
+    fn from(d: Dialect) -> DialectArg {
+        match d {
+            Dialect::Gsk => DialectArg::Gsk,
+            Dialect::Fanuc => DialectArg::Fanuc,
+            Dialect::Nc201 => DialectArg::Nc201,
+        }
+    }
+}
+
+impl From<DialectArg> for Dialect {
+    fn from(d: DialectArg) -> Dialect {
+        match d {
+            DialectArg::Gsk => Dialect::Gsk,
+            DialectArg::Fanuc => Dialect::Fanuc,
+            DialectArg::Nc201 => Dialect::Nc201,
+        }
+    }
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UnitsArg {
+    Metric,
+    Inch,
+}
+
+impl From<Units> for UnitsArg {
+    fn from(u: Units) -> UnitsArg {
+        match u {
+            Units::Metric => UnitsArg::Metric,
+            Units::Inch => UnitsArg::Inch,
+        }
+    }
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum IncrementArg {
+    Isb,
+    Isc,
+}
+
+impl From<Increment> for IncrementArg {
+    fn from(i: Increment) -> IncrementArg {
+        match i {
+            Increment::Isb => IncrementArg::Isb,
+            Increment::Isc => IncrementArg::Isc,
+        }
+    }
+}
+
+/// The configuration of `expand` and `diff`.
+#[derive(Args, Debug)]
+pub struct ConfigArgs {
+    /// Input conventions (nc201: the Russian controller of G162, G90/G91, X radius or diameter).
+    #[arg(long, value_enum, default_value_t = DialectArg::from(Config::default().dialect))]
+    pub dialect: DialectArg,
+    /// Units of the program and the trace (a G20/G21 must agree).
+    #[arg(long, value_enum, default_value_t = UnitsArg::from(Config::default().grid.units))]
+    pub units: UnitsArg,
+    /// The least increment.
+    #[arg(long, value_enum, default_value_t = IncrementArg::from(Config::default().grid.increment))]
+    pub increment: IncrementArg,
+    /// A machine parameter, N=V (repeatable): 19, 107, 18, 5130, 5131, 5140…5145, max_passes, x_radius.
+    #[arg(long = "param", value_name = "N=V")]
+    pub params: Vec<String>,
+    /// Machine X (diameter) at program start, mm or inch.
+    #[arg(long, value_name = "X", default_value = "0", allow_hyphen_values = true)]
+    pub start_x: String,
+    /// Machine Z at program start, mm or inch.
+    #[arg(long, value_name = "Z", default_value = "0", allow_hyphen_values = true)]
+    pub start_z: String,
+}
+
+/// A candidate and its limits (docs/CANDIDATE.md).
+#[derive(Args, Debug)]
+pub struct CandidateArgs {
+    /// An external expander speaking cyclecheck-candidate/1 (and /2 for arcs and G70–G72), instead of the production expander; split like a shell command line (quotes, backslashes) and run without a shell.
+    #[arg(long, value_name = "CMD")]
+    pub candidate: Option<String>,
+    /// Time allowed per case.
+    #[arg(long, value_name = "MS", default_value_t = Limits::DEFAULT_TIMEOUT_MS, value_parser = clap::value_parser!(u64).range(1..))]
+    pub timeout_ms: u64,
+    /// The longest answer line per case.
+    #[arg(long, value_name = "BYTES", default_value_t = Limits::DEFAULT_MAX_OUTPUT as u64, value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_output: u64,
+}
+
+impl CandidateArgs {
+    pub fn limits(&self) -> Limits {
+        Limits {
+            timeout: std::time::Duration::from_millis(self.timeout_ms),
+            max_output: usize::try_from(self.max_output).unwrap_or(usize::MAX),
+        }
+    }
+}
+
+#[derive(Args, Debug)]
+pub struct ExpandArgs {
+    /// The program file; - reads standard input.
+    #[arg(value_name = "FILE")]
+    pub file: String,
+    /// The engine: the reference spec or the production expander.
+    #[arg(long, value_enum, default_value_t = EngineArg::Spec)]
+    pub engine: EngineArg,
+    /// Canonical expanded G-code, or the trace as JSON (as the candidate protocol answers it).
+    #[arg(long, value_enum, default_value_t = FormatArg::Gcode)]
+    pub format: FormatArg,
+    #[command(flatten)]
+    pub config: ConfigArgs,
+}
+
+#[derive(Args, Debug)]
+pub struct DiffArgs {
+    /// Program files; - reads standard input (once).
+    #[arg(value_name = "FILE", required = true)]
+    pub files: Vec<String>,
+    /// The report per file: text (gcode), or one JSON object per line.
+    #[arg(long, value_enum, default_value_t = FormatArg::Gcode)]
+    pub format: FormatArg,
+    #[command(flatten)]
+    pub config: ConfigArgs,
+    #[command(flatten)]
+    pub candidate: CandidateArgs,
+}
+
+#[derive(Args, Debug)]
+pub struct CorpusArgs {
+    /// One line per program and a summary, or one JSON document.
+    #[arg(long, value_enum, default_value_t = CorpusFormat::Text)]
+    pub format: CorpusFormat,
+}
+
+fn cycles_help() -> String {
+    format!("all, or a comma list of: {} (the corpus and the generated campaign restricted to cases that run them)", registry::names())
+}
+
+/// The families of `--cycles`.
+#[derive(Clone, Debug)]
+pub struct Cycles(pub Vec<&'static registry::Family>);
+
+fn cycles(list: &str) -> Result<Cycles, String> {
+    certify::Options::parse_cycles(list).map(Cycles)
+}
+
+#[derive(Args, Debug)]
+pub struct CertifyArgs {
+    /// Where the bundle goes: a new directory, an empty one, or a previous bundle (replaced).
+    #[arg(long, value_name = "DIR", default_value = certify::DEFAULT_OUT)]
+    pub out: PathBuf,
+    #[command(flatten)]
+    pub candidate: CandidateArgs,
+    /// Stop a candidate run after N consecutive candidate failures (refusals aside); 0: never.
+    #[arg(long, value_name = "N", default_value_t = certify::DEFAULT_MAX_FAILURES)]
+    pub max_failures: u32,
+    #[arg(long, value_name = "LIST", default_value = "all", value_parser = cycles, help = cycles_help())]
+    pub cycles: Cycles,
+    /// Generated cases per family (the garbage generator a fifth; it runs only with all cycles).
+    #[arg(long, value_name = "N", default_value_t = certify::DEFAULT_CASES)]
+    pub cases: u32,
+    /// Seed of the generated campaign.
+    #[arg(long, value_name = "S", default_value_t = certify::DEFAULT_SEED)]
+    pub seed: u64,
+    /// A `cargo kani -p cycle-proofs` log to list with the proof properties (verdict, time,
+    /// Kani and CBMC versions per harness); without it Kani is "not run here".
+    #[arg(long, value_name = "FILE")]
+    pub kani_log: Option<PathBuf>,
+}
+
+#[derive(Args, Debug)]
+pub struct GateArgs {
+    /// Cases of the in-process differential campaign.
+    #[arg(long, value_name = "N", default_value_t = gate::DEFAULT_CASES)]
+    pub cases: u32,
+    /// Seed of the campaign, also CYCLECHECK_SEED of cargo test.
+    #[arg(long, value_name = "S", default_value_t = gate::DEFAULT_SEED)]
+    pub seed: u64,
+    /// Skip the cargo test step.
+    #[arg(long)]
+    pub no_cargo_test: bool,
+    /// CYCLECHECK_CASES of the cargo test step.
+    #[arg(long, value_name = "N", default_value_t = gate::DEFAULT_TEST_CASES)]
+    pub test_cases: u32,
+    /// CYCLECHECK_PROOF_CASES of the cargo test step.
+    #[arg(long, value_name = "N", default_value_t = gate::DEFAULT_PROOF_CASES)]
+    pub proof_cases: u64,
+}
+
+/// The targets of `--targets`.
+#[derive(Clone, Debug)]
+pub struct Targets(pub Vec<cycle_oracle::fuzzing::Target>);
+
+fn targets(list: &str) -> Result<Targets, String> {
+    nightly::parse_targets(list).map(Targets)
+}
+
+fn targets_help() -> String {
+    format!("Fuzz targets, a comma list of: {} (default: all)", nightly::target_names())
+}
+
+#[derive(Args, Debug)]
+pub struct FuzzArgs {
+    /// Seconds of fuzzing per target.
+    #[arg(long, value_name = "SECS", default_value_t = nightly::DEFAULT_BUDGET, value_parser = clap::value_parser!(u64).range(1..))]
+    pub budget: u64,
+    #[arg(long, value_name = "T,..", value_parser = targets, help = targets_help())]
+    pub targets: Option<Targets>,
+    /// Scratch corpora, artifacts, logs and the summary.
+    #[arg(long, value_name = "DIR", default_value = nightly::DEFAULT_OUT)]
+    pub out: PathBuf,
+    /// Cargo features of the fuzz crate (planted-depth-bug).
+    #[arg(long, value_name = "F")]
+    pub features: Option<String>,
+    /// Rewrite fuzz/seeds/ from the built-in set and encode them into fuzz/corpus/, then exit.
+    #[arg(long, conflicts_with = "decode")]
+    pub write_seeds: bool,
+    /// Write a fuzz input as a decoded regression case (tests/fuzz_regressions/TARGET/NAME), then exit.
+    #[arg(long, num_args = 2..=3, value_names = ["TARGET", "FILE", "NAME"])]
+    pub decode: Option<Vec<String>>,
+}

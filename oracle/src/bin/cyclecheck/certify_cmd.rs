@@ -1,0 +1,109 @@
+//! `certify`: checks its options and `--out` before anything runs, stages the bundle (each case
+//! written to `cases.jsonl` as it is judged), runs with a progress bar on stderr, writes the rest
+//! of the bundle and renames it into place; prints the summary. Exit 0 when every case conforms,
+//! 1 otherwise, 2 on bad options, an unusable `--out` or a failed write.
+
+use crate::args::CertifyArgs;
+use crate::{bad, Bad};
+use cycle_oracle::candidate::split_command;
+use cycle_oracle::certify::{self, bundle::Staging};
+use std::io::BufWriter;
+
+pub fn run(a: &CertifyArgs) -> Result<u8, Bad> {
+    let kani_log = match &a.kani_log {
+        None => None,
+        Some(f) => {
+            let text = std::fs::read_to_string(f).map_err(|e| Bad(format!("--kani-log {}: {e}", f.display())))?;
+            let log = certify::kani::parse_log(&text);
+            if log.harnesses.is_empty() {
+                return bad(format!("--kani-log {}: no \"Checking harness\" line: not a cargo-kani log", f.display()));
+            }
+            Some(log)
+        }
+    };
+    let options = certify::Options {
+        candidate: a.candidate.candidate.clone(),
+        limits: a.candidate.limits(),
+        cycles: a.cycles.0.clone(),
+        cases: a.cases,
+        seed: a.seed,
+        max_failures: a.max_failures,
+        kani_log,
+    };
+    if let Some(cmd) = &options.candidate {
+        split_command(cmd).map_err(|e| Bad(format!("--candidate {cmd:?}: {e}")))?;
+    }
+    let out = &a.out;
+    let staging = Staging::create(out).map_err(|e| Bad(format!("--out {}: {e}", out.display())))?;
+    let file = staging.create_file("cases.jsonl").map_err(|e| Bad(format!("--out {}: {e}", out.display())))?;
+    let mut cases = BufWriter::with_capacity(1 << 16, file);
+    let mut bar = ProgressBar::new();
+    let run = certify::run(&options, &mut cases, &mut |p| bar.show(p)).map_err(|e| Bad(e.0))?;
+    bar.finish();
+    drop(cases);
+    let files = certify::bundle::files(&run);
+    let written = files.iter().try_for_each(|(rel, contents)| staging.write(rel, contents)).and_then(|()| staging.commit());
+    if let Err(e) = written {
+        return bad(format!("cannot write {}: {e}", out.display()));
+    }
+    let plots = files.iter().filter(|(f, _)| f.starts_with("plots/")).count();
+    let verdict = if run.passed() { "PASS" } else { "FAIL" };
+    crate::expand::emit(&format!(
+        "{}\nwrote {}: index.html, evidence.json, cases.jsonl, {plots} plots — {verdict}\n",
+        run.summary(),
+        out.display()
+    ));
+    Ok(if run.passed() { 0 } else { 1 })
+}
+
+/// A progress bar on stderr: redrawn in place on a terminal, a line per phase otherwise.
+struct ProgressBar {
+    tty: bool,
+    phase: String,
+    last: Option<std::time::Instant>,
+}
+
+impl ProgressBar {
+    fn new() -> ProgressBar {
+        use std::io::IsTerminal as _;
+        ProgressBar { tty: std::io::stderr().is_terminal(), phase: String::new(), last: None }
+    }
+
+    fn show(&mut self, p: certify::Progress) {
+        let new_phase = self.phase != p.phase;
+        if !self.tty {
+            if new_phase {
+                eprintln!("certify: {} ({} of {} cases done, {} not conforming)", p.phase, p.done, p.total, p.bad);
+                self.phase = p.phase.to_string();
+            }
+            return;
+        }
+        let now = std::time::Instant::now();
+        let due = self.last.is_none_or(|t| now.duration_since(t).as_millis() >= 100);
+        if !(due || new_phase || p.done == p.total) {
+            return;
+        }
+        if new_phase && !self.phase.is_empty() {
+            eprintln!();
+        }
+        self.phase = p.phase.to_string();
+        self.last = Some(now);
+        const WIDTH: usize = 30;
+        let filled = (p.done * WIDTH).checked_div(p.total).unwrap_or(WIDTH).min(WIDTH);
+        eprint!(
+            "\r{:<10} [{}{}] {:>7}/{:<7} {} not conforming ",
+            p.phase,
+            "#".repeat(filled),
+            "-".repeat(WIDTH - filled),
+            p.done,
+            p.total,
+            p.bad
+        );
+    }
+
+    fn finish(&mut self) {
+        if self.tty && !self.phase.is_empty() {
+            eprintln!();
+        }
+    }
+}

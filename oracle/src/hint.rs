@@ -1,0 +1,76 @@
+//! Hints for alarms whose likely cause is the configuration rather than the program: a G20/G21
+//! against the configured units (COM.UNITS), a G code of another dialect (PRJ.DIALECT,
+//! PRJ.SUPPORTED) — `cyclecheck expand` and `diff` print them under the alarm.
+
+use crate::registry::FAMILIES;
+use cycle_spec::lex;
+use cycle_vocab::{Alarm, Config, Dialect, Rule, Units};
+use num_traits::ToPrimitive;
+
+const DIALECTS: [(Dialect, &str); 3] = [(Dialect::Gsk, "gsk"), (Dialect::Fanuc, "fanuc"), (Dialect::Nc201, "nc201")];
+
+/// The whole-number G codes of line `line` of the program.
+fn g_codes(program: &[u8], line: u32) -> Vec<u64> {
+    let Some(Ok(block)) = lex::blocks(program).find(|b| b.as_ref().map_or(true, |b| b.line >= line)) else { return Vec::new() };
+    if block.line != line {
+        return Vec::new();
+    }
+    block.g_codes().filter(|g| !g.point && !g.negative).filter_map(|g| g.mantissa().to_u64()).collect()
+}
+
+/// The dialects other than the configured one under which G code `g` means something: a cycle
+/// family's code, or G90/G91 (absolute/incremental) under `nc201`.
+fn dialects_of(g: u64, config: &Config) -> Vec<&'static str> {
+    DIALECTS
+        .iter()
+        .filter(|(d, _)| *d != config.dialect)
+        .filter(|(d, _)| FAMILIES.iter().any(|f| f.codes.contains(&g) && f.dialects.contains(d)) || (*d == Dialect::Nc201 && matches!(g, 90 | 91)))
+        .map(|(_, name)| *name)
+        .collect()
+}
+
+/// A hint for `alarm`, when its likely cause is the configuration.
+pub fn hint(program: &[u8], config: &Config, alarm: &Alarm) -> Option<String> {
+    if alarm.word != Some(b'G') {
+        return None;
+    }
+    let codes = g_codes(program, alarm.line);
+    match alarm.rule {
+        Rule::ComUnits => {
+            let (g, units) = match config.grid.units {
+                Units::Metric if codes.contains(&20) => ("G20 selects inch", "inch"),
+                Units::Inch if codes.contains(&21) => ("G21 selects millimetres", "metric"),
+                _ => return None,
+            };
+            Some(format!("hint: {g} and a trace's units are fixed by the configuration: run with --units {units}"))
+        }
+        Rule::PrjDialect | Rule::PrjSupported => codes.iter().find_map(|&g| {
+            let others = dialects_of(g, config);
+            let first = others.first()?;
+            Some(format!("hint: G{g} is a code of the {} dialect: run with --dialect {first}", others.join(" or ")))
+        }),
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn hint_for(program: &str, config: &Config) -> Option<String> {
+        let t = cycle_spec::expand(program.as_bytes(), config);
+        hint(program.as_bytes(), config, &t.alarm.expect("an alarm"))
+    }
+
+    #[test]
+    fn units_and_dialects_are_hinted() {
+        let metric = Config::default();
+        assert_eq!(hint_for("G20\nG0 X1\n", &metric).unwrap(), "hint: G20 selects inch and a trace's units are fixed by the configuration: run with --units inch");
+        let inch = Config { grid: cycle_vocab::Grid { units: Units::Inch, ..metric.grid }, ..metric };
+        assert!(hint_for("G0 X1\nG21\n", &inch).unwrap().ends_with("run with --units metric"));
+        assert_eq!(hint_for("G0 X1\nG162 X1\n", &metric).unwrap(), "hint: G162 is a code of the nc201 dialect: run with --dialect nc201");
+        assert!(hint_for("G91 G0 X1\n", &metric).unwrap().ends_with("run with --dialect nc201"));
+        // An alarm of the program itself gets none.
+        assert_eq!(hint_for("G0 X65 Z5\nG92 X58.7 Z-28\n", &metric), None);
+    }
+}
