@@ -18,7 +18,13 @@
 //!
 //! **Not a Kani proof (yet).** Over the full ranges Kani 0.61.0 / CBMC 6.4.0 reached no verdict
 //! in 1 289 s (issue #25). The bounded scope [`KANI`] below was prepared but not run to a verdict
-//! in this session, so the Kani wrapper is not committed.
+//! (and would lose P, Q ≥ 2^12), so it has no Kani wrapper.
+//!
+//! **TEST `g162_split_tail`** ([`tail_body`], also driver-only): the same split over the full
+//! ranges, P formed as kQ + D so that no division is needed and `norm` stubbed by k and D
+//! ([`stubs`]) — everything of [`body`] that is linear in P, k and D. Kani reached no verdict
+//! on it either (CaDiCaL: 10 min; Kissat 4.0.1: 15 min; proofs/README.md); the wrapper that
+//! was run is in a comment after [`stubs`].
 //!
 //! **Intended Kani bounds.** P, Q ≤ 2^12 − 1 ([`KANI`]; n and `limit` symbolic over their whole ranges);
 //! the drivers sample the full legal ranges ([`FULL`]). The only loops
@@ -41,8 +47,8 @@ pub struct Scope {
 /// What the drivers sample: the full legal ranges.
 pub const FULL: Scope = Scope { max_len: MAX_LENGTH };
 
-/// What Kani proves: P, Q ≤ 2^12 − 1 (a bounded proof: 1.7·10^7 pairs, every full pass n and
-/// every limit symbolic). The full ranges are left to the drivers: checking ⌊P/Q⌋ and n·Q of
+/// The bounded scope prepared for Kani (not run to a verdict, no wrapper): P, Q ≤ 2^12 − 1
+/// (1.7·10^7 pairs, every full pass n and every limit symbolic). The full ranges are left to the drivers: checking ⌊P/Q⌋ and n·Q of
 /// 30-bit words against the model bit-blasts to nonlinear equivalences (two dividers, two
 /// multipliers) that did not finish in 1 289 s (issue #25).
 pub const KANI: Scope = Scope { max_len: (1 << 12) - 1 };
@@ -206,7 +212,7 @@ pub struct TailScope {
     pub k_below_quotient: bool,
 }
 
-/// What Kani proves: the full legal ranges.
+/// The scope written for Kani: the full legal ranges (also run by a driver).
 pub const TAIL_KANI: TailScope = TailScope { max_len: MAX_LENGTH, k_below_quotient: false };
 
 /// What the drivers sample: the same ranges.
@@ -332,17 +338,18 @@ pub mod stubs {
     }
 }
 
-/// Kani: the split over the full legal ranges, modulo the stub of `norm` (see [`stubs`]).
-/// Unwind 6: the tail loop (≤ 5), the model's and production's four targets.
-#[cfg(kani)]
-#[kani::proof]
-#[kani::unwind(6)]
-#[kani::solver(kissat)]
-#[kani::stub(cycle_impl::g162::norm, stubs::norm_spec)]
-fn g162_split_tail() {
-    let _ = tail_body(&mut crate::source::KaniSource, &TAIL_KANI);
-}
-
+// No Kani wrapper: a TEST (see the module documentation). The wrapper that was run:
+//
+//     #[cfg(kani)]
+//     #[kani::proof]
+//     #[kani::unwind(6)]
+//     #[kani::solver(kissat)]   // also tried without: CaDiCaL
+//     #[kani::stub(cycle_impl::g162::norm, stubs::norm_spec)]
+//     fn g162_split_tail() {
+//         let _ = tail_body(&mut crate::source::KaniSource, &TAIL_KANI);
+//     }
+//
+// run with `cargo kani -p cycle-proofs --harness g162_split_tail -Z stubbing`.
 
 #[cfg(test)]
 mod tests {

@@ -328,6 +328,27 @@ Complete - 1 successfully verified harnesses, 1 failures, 2 total.
         assert_eq!(parse_log("").harnesses, vec![]);
     }
 
+    /// An excerpt of the measured g92_pullout_geometry log (Kissat, an external solver), with
+    /// the `/usr/bin/time -v` lines that follow it in the evidence file.
+    #[test]
+    fn kissat_log_with_time_lines() {
+        let text = "Kani Rust Verifier 0.61.0 (cargo plugin)\n\
+                    Checking harness g92_pullout_geometry::g92_pullout_geometry...\n\
+                    CBMC version 6.4.0 (27a27caba2-dirty) 64-bit x86_64 linux\n\
+                    Solving with External SAT solver\nresult:SATISFIABLE\n\
+                    SUMMARY:\n ** 0 of 200 failed (2 unreachable)\n ** 5 of 5 cover properties satisfied\n\n\
+                    VERIFICATION:- SUCCESSFUL\nVerification Time: 214.57138s\n\n\
+                    Complete - 1 successfully verified harnesses, 0 failures, 1 total.\n\
+                    \tElapsed (wall clock) time (h:mm:ss or m:ss): 3:37.04\n\tMaximum resident set size (kbytes): 309388\n";
+        let log = parse_log(text);
+        assert_eq!(log.verdict_of("g92_pullout_geometry"), Some(&Verdict::Successful));
+        assert_eq!(log.result_of("g92_pullout_geometry").and_then(|h| h.seconds), Some(214.57138));
+        assert_eq!(property("g92_pullout_geometry").map(|p| p.checked_by), Some(CheckedBy::Kani));
+        for name in ["depth_step", "g162_split_tail", "g71_layers"] {
+            assert_eq!(property(name).map(|p| p.checked_by), Some(CheckedBy::Drivers), "{name}");
+        }
+    }
+
     #[test]
     fn property_table_is_well_formed() {
         let mut names: Vec<&str> = PROPERTIES.iter().map(|p| p.harness).collect();
