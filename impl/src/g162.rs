@@ -35,14 +35,17 @@ pub struct Step {
     pub stage: u8,
 }
 
-/// The split's numbers in their domain (P, Q ≥ 1), as unsigned magnitudes.
-struct Norm {
-    p: u64,
-    q: u64,
+/// The split's numbers in their domain (P, Q ≥ 1), as unsigned magnitudes. (Public, hidden
+/// from the docs, only so that a Kani proof can stub `norm` by its specification:
+/// proofs/src/g162_split.rs.)
+#[doc(hidden)]
+pub struct Norm {
+    pub p: u64,
+    pub q: u64,
     /// k = ⌊P / Q⌋ full passes.
-    k: u64,
+    pub k: u64,
     /// D = P − kQ, the remainder (0 ≤ D < Q).
-    d: u64,
+    pub d: u64,
 }
 
 fn norm(sp: &SplitParams) -> Norm {

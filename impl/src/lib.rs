@@ -73,7 +73,10 @@ pub mod number;
 /// amounts and geometry below the lexer; not part of the API.
 #[doc(hidden)]
 pub mod pullout;
-mod rough;
+/// Public (hidden) only so that the proof harnesses (`cycle-proofs`) can drive one G71/G72 cycle's
+/// layer schedule below the lexer (`g71_layers`); not part of the API.
+#[doc(hidden)]
+pub mod rough;
 mod run;
 pub mod schedule;
 mod thread_move;

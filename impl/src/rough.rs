@@ -300,9 +300,11 @@ impl Roughing {
         i128::from(self.s) * (i128::from(self.axis.a(p)) - i128::from(self.axis.a(self.start)))
     }
 
-    /// a_k, the layer coordinate of layer k.
+    /// a_k, the layer coordinate of layer k. (Public, hidden, only for the proof harness
+    /// `g71_layers` in cycle-proofs.)
+    #[doc(hidden)]
     #[inline]
-    fn layer_at(&self, k: u32) -> i64 {
+    pub fn layer_at(&self, k: u32) -> i64 {
         let d = i64::from(k).saturating_mul(self.step);
         self.axis.a(self.start).saturating_add(self.s.saturating_mul(d))
     }
@@ -328,7 +330,9 @@ impl Roughing {
     /// G71.LAYER: the number of layers K — the k before the first that fails — counted up to
     /// `limit` (the caller refuses K ≥ `limit`). Layer k exists while k·step < D(Q₀) and its cut
     /// is positive. One pass over the elements in layer order (see the module's notes).
-    fn count(&self, contour: &Contour, limit: u32) -> u32 {
+    /// (Public, hidden, only for the proof harness `g71_layers` in cycle-proofs.)
+    #[doc(hidden)]
+    pub fn count(&self, contour: &Contour, limit: u32) -> u32 {
         let step = i128::from(self.step.max(1));
         let d0 = self.reach(self.point(contour, 0));
         let k1 = if d0 > 0 { (d0 - 1) / step } else { 0 };

@@ -18,14 +18,20 @@
 //!
 //! **Not a Kani proof (yet).** Over the full ranges Kani 0.61.0 / CBMC 6.4.0 reached no verdict
 //! in 1 289 s (issue #25). The bounded scope [`KANI`] below was prepared but not run to a verdict
-//! in this session, so the Kani wrapper is not committed.
+//! (and would lose P, Q ≥ 2^12), so it has no Kani wrapper.
+//!
+//! **TEST `g162_split_tail`** ([`tail_body`], also driver-only): the same split over the full
+//! ranges, P formed as kQ + D so that no division is needed and `norm` stubbed by k and D
+//! ([`stubs`]) — everything of [`body`] that is linear in P, k and D. Kani reached no verdict
+//! on it either (CaDiCaL: 10 min; Kissat 4.0.1: 15 min; proofs/README.md); the wrapper that
+//! was run is in a comment after [`stubs`].
 //!
 //! **Intended Kani bounds.** P, Q ≤ 2^12 − 1 ([`KANI`]; n and `limit` symbolic over their whole ranges);
 //! the drivers sample the full legal ranges ([`FULL`]). The only loops
 //! are the tail iteration (≤ 5), the model's four targets and the production's four targets
 //! (`split_after`, `pass_count`): `#[kani::unwind(6)]`.
 
-use crate::source::{Outcome, Source};
+use crate::source::{bounded_i64_upto, Outcome, Source};
 use crate::{check, cover};
 use cycle_impl::g162::{first, next, pass_count, SplitParams, Step};
 use cycle_impl::MAX_LENGTH;
@@ -41,8 +47,8 @@ pub struct Scope {
 /// What the drivers sample: the full legal ranges.
 pub const FULL: Scope = Scope { max_len: MAX_LENGTH };
 
-/// What Kani proves: P, Q ≤ 2^12 − 1 (a bounded proof: 1.7·10^7 pairs, every full pass n and
-/// every limit symbolic). The full ranges are left to the drivers: checking ⌊P/Q⌋ and n·Q of
+/// The bounded scope prepared for Kani (not run to a verdict, no wrapper): P, Q ≤ 2^12 − 1
+/// (1.7·10^7 pairs, every full pass n and every limit symbolic). The full ranges are left to the drivers: checking ⌊P/Q⌋ and n·Q of
 /// 30-bit words against the model bit-blasts to nonlinear equivalences (two dividers, two
 /// multipliers) that did not finish in 1 289 s (issue #25).
 pub const KANI: Scope = Scope { max_len: (1 << 12) - 1 };
@@ -62,21 +68,26 @@ pub mod model {
         pub count: usize,
     }
 
-    /// kQ + e·D/8 rounded half up: ⌊(8kQ + e·D + 4) / 8⌋ (all positive).
+    /// kQ + e·D/8 rounded half up: ⌊(8kQ + e·D + 4) / 8⌋ (all non-negative, so the floor
+    /// of the quotient by 8 is the shift by 3).
     pub fn target(kq: i64, d: i64, e: i64) -> i64 {
-        (8 * kq + e * d + 4) / 8
+        (8 * kq + e * d + 4) >> 3
     }
 
     pub fn split(p: i64, q: i64) -> Split {
         let k = p / q;
-        let d = p - k * q;
+        split_from(k, k * q, p - k * q)
+    }
+
+    /// The split given k = ⌊P/Q⌋, kQ and the remainder D = P − kQ (no division, no product).
+    pub fn split_from(k: i64, kq: i64, d: i64) -> Split {
         let mut s = Split { k, d, tail: [(0, 0); 4], count: 0 };
         if d == 0 {
             return s;
         }
-        let mut prev = k * q;
+        let mut prev = kq;
         for e in EIGHTHS {
-            let t = target(k * q, d, e);
+            let t = target(kq, d, e);
             if t > prev {
                 if let Some(slot) = s.tail.get_mut(s.count) {
                     *slot = (t, e);
@@ -120,7 +131,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
 
     // Every full pass n: `next` is the model's pass n + 1.
     if m.k >= 1 {
-        let n = src.bounded_i64(1, m.k);
+        let n = bounded_i64_upto(src, 1, m.k, scope.max_len)?;
         let prev = Step { n: n as u32, depth: n * q, last: n * q == p, rule: Rule::G162Pq, stage: 0 };
         let nx = next(&sp, &prev);
         if n < m.k {
@@ -190,6 +201,155 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     Ok(())
 }
 
+/// The ranges the full-range harness `g162_split_tail` draws from.
+#[derive(Clone, Copy, Debug)]
+pub struct TailScope {
+    /// Largest P and Q.
+    pub max_len: i64,
+    /// Draw k ≤ `max_len` / Q (the drivers: few cases discarded) rather than k ≤ `max_len`
+    /// (Kani: constant bounds and no division in the harness; the assumption P ≤ `max_len`
+    /// discards the rest). The same set of (P, Q) either way.
+    pub k_below_quotient: bool,
+}
+
+/// The scope written for Kani: the full legal ranges (also run by a driver).
+pub const TAIL_KANI: TailScope = TailScope { max_len: MAX_LENGTH, k_below_quotient: false };
+
+/// What the drivers sample: the same ranges.
+pub const TAIL_FULL: TailScope = TailScope { max_len: MAX_LENGTH, k_below_quotient: true };
+
+/// The body of `g162_split_tail`: the split over the full legal ranges, with P formed as
+/// kQ + D (so k = ⌊P/Q⌋ and D = P mod Q by definition, and no division is needed), checking
+/// everything of [`body`] that is linear in P, k and D — pass 1, the order and numbering of the
+/// full passes, the step from the last full pass into the split, the whole split (targets,
+/// rounding, dropped targets, last exactly at P, cuts summing to D), the pass count — but not
+/// the `last` flag of a full pass (whether nQ reaches P: a product against a product) nor pass
+/// 1's `last` when Q ≤ P, which [`body`] checks (Kani: P, Q < 2^12; drivers: full ranges).
+pub fn tail_body<S: Source>(src: &mut S, scope: &TailScope) -> Outcome {
+    let q = src.bounded_i64(1, scope.max_len);
+    let k_max = if scope.k_below_quotient { scope.max_len / q } else { scope.max_len };
+    let k = src.bounded_i64(0, k_max);
+    let d = bounded_i64_upto(src, 0, q - 1, scope.max_len)?;
+    let limit = src.bounded_u32(0, u32::MAX);
+    // P = kQ + D with 0 ≤ D < Q: k = ⌊P/Q⌋, D = P − kQ. (k, Q ≤ N < 2^30: no overflow.)
+    let kq = i128::from(k) * i128::from(q);
+    let p = kq + i128::from(d);
+    src.assume(1 <= p && p <= i128::from(scope.max_len))?;
+    let (kq, p) = (kq as i64, p as i64);
+    #[cfg(kani)]
+    stubs::set_norm(p, q, k, d);
+    let sp = SplitParams { depth: p, allowance: q };
+    let m = model::split_from(k, kq, d);
+    check!(src, m.d == 0 || (m.count >= 1 && m.tail.get(m.count - 1).map(|t| t.0) == Some(p)), "the split ends at P");
+
+    // Pass 1.
+    let f = first(&sp);
+    if k == 0 {
+        check!(src, f.n == 1 && (f.depth, f.rule) == (m.tail[0].0, Rule::G162Split), "G162.SPLIT: with Q > P pass 1 is the first split target");
+        check!(src, f.last == (f.depth == p), "last exactly at depth P (pass 1)");
+    } else {
+        check!(src, f.n == 1 && (f.depth, f.rule, f.stage) == (q, Rule::G162Pq, 0), "G162.PQ: pass 1 is Q when Q ≤ P");
+    }
+
+    // A full pass n < k (at any depth below P: the step reads its number): full pass n + 1.
+    if k >= 2 {
+        let n = bounded_i64_upto(src, 1, k - 1, scope.max_len)?;
+        let depth = bounded_i64_upto(src, 0, p - 1, scope.max_len)?;
+        let prev = Step { n: n as u32, depth, last: false, rule: Rule::G162Pq, stage: 0 };
+        let nx = next(&sp, &prev);
+        check!(src, nx.is_some(), "a full pass before the last has a successor");
+        let Some(nx) = nx else { return Ok(()) };
+        check!(src, nx.n == prev.n + 1 && nx.rule == Rule::G162Pq && nx.stage == 0, "G162.PQ: after full pass n < k comes full pass n + 1");
+        // (n + 1)·Q, in the schedule's saturating form (the same value: (n + 1)·Q ≤ P < 2^63).
+        let want = i64::try_from(u64::from(nx.n).saturating_mul(q.max(1).unsigned_abs())).unwrap_or(i64::MAX);
+        check!(src, nx.depth == want, "G162.PQ: full pass n + 1 is (n + 1)·Q deep");
+        cover!(src, true, "a full pass before the last");
+    }
+
+    // From the last full pass (k ≥ 1, depth kQ) or from pass 1 (k = 0): the split, whole.
+    let mut r = if k >= 1 { Step { n: k as u32, depth: kq, last: d == 0, rule: Rule::G162Pq, stage: 0 } } else { f };
+    let mut i = if k >= 1 { 0 } else { 1 };
+    let mut ended = r.last;
+    let mut steps = 0;
+    while !ended && steps < 5 {
+        steps += 1;
+        let Some(nx) = next(&sp, &r) else {
+            check!(src, false, "a pass that is not at P has a successor");
+            return Ok(());
+        };
+        check!(src, nx.n == r.n + 1, "pass numbers count up by one");
+        check!(src, nx.depth > r.depth && nx.depth <= p, "depths strictly increase and never pass P");
+        check!(src, nx.rule == Rule::G162Split, "split passes name G162.SPLIT");
+        let want = m.tail.get(i).copied();
+        check!(src, want.map(|t| t.0) == Some(nx.depth), "the split passes are the model's kept targets");
+        let e = want.map_or(0, |t| t.1);
+        check!(src, model::is_rounded_target(nx.depth, kq, d, e), "each split depth is its exact target rounded once half up");
+        check!(src, nx.last == (nx.depth == p), "last exactly at depth P");
+        i += 1;
+        r = nx;
+        ended = r.last;
+    }
+    check!(src, ended && r.depth == p, "the last pass is exactly at P");
+    check!(src, next(&sp, &r).is_none(), "nothing after the pass at P");
+    check!(src, i == m.count, "every kept target is cut");
+    check!(src, d == 0 || r.depth - kq == d, "G162.SPLIT: the split cuts sum exactly to the remainder D");
+
+    // PRJ.MAXPASS.
+    let total = k + m.count as i64;
+    let want_count = if total <= i64::from(limit) { Some(total as u32) } else { None };
+    check!(src, pass_count(&sp, limit) == want_count, "PRJ.MAXPASS: pass_count is k + the kept targets, None above the limit");
+
+    cover!(src, k == 0, "Q > P: only split passes");
+    cover!(src, k >= 1 && d == 0, "zero remainder");
+    cover!(src, d > 0 && m.count < 4, "a target dropped (remainder below one increment per cut)");
+    cover!(src, m.count == 4, "all four split passes");
+    cover!(src, want_count.is_none(), "more passes than the limit");
+    Ok(())
+}
+
+/// Kani stubs of `g162_split_tail` (TRUSTED, see the README): `norm` (k = ⌊P/Q⌋, D = P − kQ)
+/// replaced by the harness's own k and D, for which P = kQ + D, 0 ≤ D < Q holds by
+/// construction — so the stub returns exactly ⌊P/Q⌋ and P mod Q; what is trusted is that the
+/// real `norm` computes them (Rust's `/` on `u64` and a subtraction that cannot wrap).
+#[cfg(kani)]
+pub mod stubs {
+    use core::sync::atomic::{AtomicI64, Ordering::SeqCst};
+    use cycle_impl::g162::{Norm, SplitParams};
+
+    static P: AtomicI64 = AtomicI64::new(0);
+    static Q: AtomicI64 = AtomicI64::new(0);
+    static K: AtomicI64 = AtomicI64::new(0);
+    static D: AtomicI64 = AtomicI64::new(0);
+
+    /// Records the harness's P = kQ + D (all ≥ 0, Q ≥ 1).
+    pub fn set_norm(p: i64, q: i64, k: i64, d: i64) {
+        P.store(p, SeqCst);
+        Q.store(q, SeqCst);
+        K.store(k, SeqCst);
+        D.store(d, SeqCst);
+    }
+
+    /// `cycle_impl::g162::norm` for the recorded P and Q: (P, Q, k, D).
+    pub fn norm_spec(sp: &SplitParams) -> Norm {
+        let p = sp.depth.max(1).unsigned_abs();
+        let q = sp.allowance.max(1).unsigned_abs();
+        kani::assert(p as i64 == P.load(SeqCst) && q as i64 == Q.load(SeqCst), "norm is asked only about the harness's P and Q");
+        Norm { p, q, k: K.load(SeqCst) as u64, d: D.load(SeqCst) as u64 }
+    }
+}
+
+// No Kani wrapper: a TEST (see the module documentation). The wrapper that was run:
+//
+//     #[cfg(kani)]
+//     #[kani::proof]
+//     #[kani::unwind(6)]
+//     #[kani::solver(kissat)]   // also tried without: CaDiCaL
+//     #[kani::stub(cycle_impl::g162::norm, stubs::norm_spec)]
+//     fn g162_split_tail() {
+//         let _ = tail_body(&mut crate::source::KaniSource, &TAIL_KANI);
+//     }
+//
+// run with `cargo kani -p cycle-proofs --harness g162_split_tail -Z stubbing`.
 
 #[cfg(test)]
 mod tests {
@@ -229,6 +389,32 @@ mod tests {
     #[test]
     fn g162_split_exact_random() {
         let r = random(0x5eed_0162, random_cases(2), |s| body(s, &FULL)).assert_ok();
+        println!("{r}");
+    }
+
+    /// `g162_split_tail`'s body: P, Q ≤ 40 (k ≤ 40 / Q); each draw its 6 smallest and largest values.
+    #[test]
+    fn g162_split_tail_exhaustive() {
+        let r = exhaustive(6, 2_000_000, |s| tail_body(s, &TailScope { max_len: 40, k_below_quotient: true })).assert_ok();
+        println!("{r}");
+    }
+
+    #[test]
+    fn g162_split_tail_exhaustive_edges() {
+        let r = exhaustive(4, 1_000_000, |s| tail_body(s, &TAIL_FULL)).assert_ok();
+        println!("{r}");
+    }
+
+    #[test]
+    fn g162_split_tail_random() {
+        let r = random(0x5eed_0163, random_cases(2), |s| tail_body(s, &TAIL_FULL)).assert_ok();
+        println!("{r}");
+    }
+
+    /// The Kani scope's draws (k ≤ N, most cases discarded) still reach every case.
+    #[test]
+    fn g162_split_tail_kani_scope_random() {
+        let r = random(0x5eed_0164, random_cases(8), |s| tail_body(s, &TAIL_KANI)).assert_ok();
         println!("{r}");
     }
 }

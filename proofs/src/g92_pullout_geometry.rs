@@ -18,18 +18,21 @@
 //!    −sign(W)) or is 0.
 //! 2. `tenths_of_lead(No.19, lead, grid)` for No.19 0…255, any legal lead, both increment
 //!    systems: round(No.19 · lead / 10) on the length grid, half up, checked by its exact
-//!    bracket (no division).
+//!    bracket (no division), decided in `u128` ([`is_div_round_u64`]: num < 2^35, den ≤ 100,
+//!    so nothing is lost against the 256-bit [`crate::model::is_div_round`]). Each grid is
+//!    its own path, so the divisor is a constant on each.
 //!
 //! **Left to the drivers** (`g92_pullout_total`, a TEST, and impl's unit tests): the size of the
 //! interpolated coordinate (|round(R·K/|W|)| ≤ |R|, its exact rounding) — a quotient of products
 //! of 30-bit words, beyond a SAT solver's reach (see `depth_step_clamp`) — and the whole G92
 //! trace built from these parts.
 //!
-//! **Kani bounds.** Everything symbolic over the ranges above. The production functions have no
-//! loops; the bracket check's 256-bit helpers ([`crate::model::W256`]) loop at most 4 times:
-//! `#[kani::unwind(5)]`.
+//! **Kani bounds.** Everything symbolic over the ranges above; no stub. Neither the production
+//! functions nor the checks loop (the 256-bit helpers, whose limb loops made the last query
+//! too hard for the SAT solver, are no longer used here). `#[kani::unwind(5)]`,
+//! `#[kani::solver(kissat)]`; the measured verdict is in proofs/README.md.
 
-use crate::model::is_div_round;
+use crate::model::is_div_round_u64;
 use crate::source::{Outcome, Source};
 use crate::{check, cover};
 use cycle_impl::pullout::{g92_amounts, offsets, tenths_of_lead, z_long, Amounts};
@@ -108,24 +111,39 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
         _ => {
             let tenths = src.bounded_u32(0, 255);
             let lead = src.bounded_i64(1, scope.max_lead);
-            let grid = if src.bool() { Grid::METRIC_ISB } else { Grid { increment: cycle_vocab::Increment::Isc, ..Grid::METRIC_ISB } };
-            let c = tenths_of_lead(tenths, lead, grid);
-            let den = 10 * grid.lead_counts_per_increment() as u128;
-            check!(
-                src,
-                c >= 0 && is_div_round(c as u128, u128::from(tenths) * lead as u128, den),
-                "G92.JK.1: No.19 × lead / 10 on the length grid, rounded once half up"
-            );
-            cover!(src, c > 0, "a pull-out amount");
+            // One call per increment system, each with its grid a constant: under Kani the
+            // divisor (10 or 100) is then a constant on each path, not a symbolic choice.
+            if src.bool() {
+                tenths_case(src, tenths, lead, Grid::METRIC_ISB)?;
+            } else {
+                tenths_case(src, tenths, lead, Grid { increment: cycle_vocab::Increment::Isc, ..Grid::METRIC_ISB })?;
+            }
         }
     }
     Ok(())
 }
 
-/// Kani: the pull-out parts over the legal ranges. Unwind 5: the 256-bit helpers loop ≤ 4.
+/// Part 2 on one grid: `tenths_of_lead` against the exact bracket of No.19 × lead / 10.
+fn tenths_case<S: Source>(src: &mut S, tenths: u32, lead: i64, grid: Grid) -> Outcome {
+    let c = tenths_of_lead(tenths, lead, grid);
+    // 64-bit operands: No.19 ≤ 255 and lead < 2^27 give num < 2^35; den is 10 or 100.
+    let den = 10 * grid.lead_counts_per_increment().unsigned_abs();
+    check!(
+        src,
+        c >= 0 && is_div_round_u64(c as u64, u64::from(tenths) * lead as u64, den),
+        "G92.JK.1: No.19 × lead / 10 on the length grid, rounded once half up"
+    );
+    cover!(src, c > 0, "a pull-out amount");
+    Ok(())
+}
+
+/// Kani: the pull-out parts over the legal ranges. Kissat: with CaDiCaL (Kani's default) the
+/// last query reached no verdict in 5–15 min (README). Unwind 5 as measured; no loop is left
+/// (part 2's bracket is decided in `u128`, [`is_div_round_u64`]), so it bounds nothing.
 #[cfg(kani)]
 #[kani::proof]
 #[kani::unwind(5)]
+#[kani::solver(kissat)]
 fn g92_pullout_geometry() {
     let _ = body(&mut crate::source::KaniSource, &KANI);
 }

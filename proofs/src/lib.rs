@@ -16,6 +16,8 @@ pub mod schedule;
 pub mod depth_bounds;
 pub mod depth_step_monotone;
 pub mod depth_step_clamp;
+pub mod depth_step;
+pub mod g71_layers;
 pub mod fixed_point;
 pub mod mutation;
 pub mod expander_envelope;

@@ -1,6 +1,7 @@
 //! The register's arithmetic, restated independently of `cycle-impl` for the harnesses'
 //! expectations: rounded square roots by their bracket (no root is taken), the switch pass of
-//! G76.DEPTH.MIN in closed form, half-up quotients. Loop-free, so Kani needs no unwinding here.
+//! G76.DEPTH.MIN in closed form, half-up quotients. Loop-free except the 256-bit helpers
+//! ([`W256`], loops over its four limbs: unwind 5 where a harness uses them).
 //! Inputs are within the legal ranges (lengths ≤ N = 999 999 999 < 2^30), where every product
 //! below fits `u128`.
 
@@ -147,6 +148,18 @@ pub fn is_div_round(q: u128, num: u128, den: u128) -> bool {
     }
 }
 
+/// [`is_div_round`] for operands that fit 64 bits, decided in `u128` with no loop: q·den < 2^128
+/// always; when 2·q·den does not fit 128 bits it exceeds 2·num + den < 2^66, so q is too large.
+/// The same bracket, 2·q·den ≤ 2·num + den and 2·num < 2·q·den + den; for a Kani harness whose
+/// ranges fit 64 bits (the 256-bit helpers' loops cost a SAT solver far more than one product).
+pub fn is_div_round_u64(q: u64, num: u64, den: u64) -> bool {
+    let (q, num, den) = (u128::from(q), u128::from(num), u128::from(den));
+    let Some(two_qd) = (q * den).checked_mul(2) else { return false };
+    let rhs = 2 * num + den;
+    // Evaluated only when two_qd ≤ rhs < 2^66: no overflow.
+    two_qd <= rhs && 2 * num < two_qd + den
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -193,6 +206,18 @@ mod tests {
             assert_eq!(is_div_round(q, num, den), ok, "{q} {num}/{den}");
         }
         assert!(is_div_round(1, u128::MAX, u128::MAX));
+        for num in 0u64..400 {
+            for den in 1u64..30 {
+                for q in 0u64..40 {
+                    let wide = is_div_round(u128::from(q), u128::from(num), u128::from(den));
+                    assert_eq!(is_div_round_u64(q, num, den), wide, "{q} {num}/{den}");
+                }
+            }
+        }
+        for (q, num, den) in [(u64::MAX, u64::MAX, 1), (u64::MAX, u64::MAX, u64::MAX), (1, u64::MAX, u64::MAX), (0, 0, u64::MAX), (u64::MAX / 2 + 1, u64::MAX, 2)] {
+            let wide = is_div_round(u128::from(q), u128::from(num), u128::from(den));
+            assert_eq!(is_div_round_u64(q, num, den), wide, "{q} {num}/{den}");
+        }
         assert!(!is_div_round(u128::MAX, u128::MAX, 3));
     }
 

@@ -75,3 +75,19 @@ impl Source for KaniSource {
         Ok(())
     }
 }
+
+/// A value in `lo..=hi`, where `hi ≤ cap` and `cap` is a constant of the harness's scope.
+///
+/// Under Kani it is drawn in `lo..=cap` and assumed ≤ `hi`: a symbolic `hi` would make
+/// [`KaniSource`]'s draw 128 bits wide (the narrowest type is chosen from the span, which would
+/// then be symbolic), while `cap` keeps it as narrow as the scope. Under the drivers it is drawn
+/// in `lo..=hi` directly, so no case is discarded. The same set of values either way.
+pub fn bounded_i64_upto<S: Source>(src: &mut S, lo: i64, hi: i64, cap: i64) -> Result<i64, Stop> {
+    if cfg!(kani) {
+        let v = src.bounded_i64(lo, cap);
+        src.assume(v <= hi)?;
+        Ok(v)
+    } else {
+        Ok(src.bounded_i64(lo, hi))
+    }
+}

@@ -179,6 +179,24 @@ pub const PROPERTIES: &[Property] = &[
         checked_by: CheckedBy::Kani,
     },
     Property {
+        harness: "depth_step",
+        rules: &["G76.DEPTH.1", "G76.DEPTH.MIN", "G76.DEPTH.LAST", "G78.DEPTHMODE"],
+        statement: "One step of the production depth schedule (first, or next of any pass) over the full legal ranges, with root and switch_pass stubbed by their specifications (z3 lemmas 01, 02, 07; impl's unit tests): numbered n + 1, depth in 1…k − d, last exactly at k − d and named G76.DEPTH.LAST, a minimum cut adds exactly Δdmin, a constant step adds Δd (depth n·Δd), a G76.DEPTH.1 depth is the root of n·Δd², nothing after the last or past pass 2^32 − 1.",
+        checked_by: CheckedBy::Drivers,
+    },
+    Property {
+        harness: "g162_split_tail",
+        rules: &["G162.PQ", "G162.SPLIT", "PRJ.MAXPASS"],
+        statement: "The G162 split over the full legal ranges with P formed as kQ + D (norm stubbed by k and D): pass 1, full pass n + 1 after n < k at (n + 1)·Q, the split targets kQ + e·D/8 rounded once half up (a target not deeper dropped), last exactly at P, the cuts summing to D, the pass count against the limit.",
+        checked_by: CheckedBy::Drivers,
+    },
+    Property {
+        harness: "g71_layers",
+        rules: &["G71.LAYER", "G72.LAYER", "PRJ.MAXPASS"],
+        statement: "The G71/G72 layer schedule below the contour geometry: TOO MANY PASSES before motion exactly when layer max_passes exists; layers strictly monotone toward the contour, each depth step exactly Δd, every layer before Q₀, the count the closed form ⌈D/step⌉ − 1 (0 when the cut is not positive); the run's headers, infeeds and cuts.",
+        checked_by: CheckedBy::Drivers,
+    },
+    Property {
         harness: "depth_step_monotone",
         rules: &["G76.DEPTH.1", "G76.DEPTH.MIN", "G76.DEPTH.LAST", "G78.DEPTHMODE"],
         statement: "Every reachable pass n of the production schedule is the register's closed form (round(√n·Δd) before the switch pass, + Δdmin from it, n·Δd in constant mode, clamped at k − d), and each step is monotone.",
@@ -308,6 +326,27 @@ Complete - 1 successfully verified harnesses, 1 failures, 2 total.
         assert_eq!(log.verdict_of("d"), Some(&Verdict::NoVerdict("VERIFICATION:- UNDETERMINED".into())));
         assert_eq!(log.cbmc_version, None);
         assert_eq!(parse_log("").harnesses, vec![]);
+    }
+
+    /// An excerpt of the measured g92_pullout_geometry log (Kissat, an external solver), with
+    /// the `/usr/bin/time -v` lines that follow it in the evidence file.
+    #[test]
+    fn kissat_log_with_time_lines() {
+        let text = "Kani Rust Verifier 0.61.0 (cargo plugin)\n\
+                    Checking harness g92_pullout_geometry::g92_pullout_geometry...\n\
+                    CBMC version 6.4.0 (27a27caba2-dirty) 64-bit x86_64 linux\n\
+                    Solving with External SAT solver\nresult:SATISFIABLE\n\
+                    SUMMARY:\n ** 0 of 200 failed (2 unreachable)\n ** 5 of 5 cover properties satisfied\n\n\
+                    VERIFICATION:- SUCCESSFUL\nVerification Time: 214.57138s\n\n\
+                    Complete - 1 successfully verified harnesses, 0 failures, 1 total.\n\
+                    \tElapsed (wall clock) time (h:mm:ss or m:ss): 3:37.04\n\tMaximum resident set size (kbytes): 309388\n";
+        let log = parse_log(text);
+        assert_eq!(log.verdict_of("g92_pullout_geometry"), Some(&Verdict::Successful));
+        assert_eq!(log.result_of("g92_pullout_geometry").and_then(|h| h.seconds), Some(214.57138));
+        assert_eq!(property("g92_pullout_geometry").map(|p| p.checked_by), Some(CheckedBy::Kani));
+        for name in ["depth_step", "g162_split_tail", "g71_layers"] {
+            assert_eq!(property(name).map(|p| p.checked_by), Some(CheckedBy::Drivers), "{name}");
+        }
     }
 
     #[test]

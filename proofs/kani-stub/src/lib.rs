@@ -7,9 +7,9 @@
 //!
 //! The signatures follow the real crate: `any::<T: Arbitrary>()`, `any_where(f)`,
 //! `assume(bool)`, `assert(bool, &'static str)`, `cover!(cond, "msg")`, `#[kani::proof]`,
-//! `#[kani::unwind(n)]`.
+//! `#[kani::unwind(n)]`, `#[kani::stub(original, replacement)]`, `#[kani::solver(s)]`.
 
-pub use kani_stub_macros::{proof, stub, unwind};
+pub use kani_stub_macros::{proof, solver, stub, unwind};
 
 /// Types that have a symbolic (here: a default concrete) value.
 pub trait Arbitrary: Sized {

@@ -1,4 +1,4 @@
-//! `#[kani::proof]` and `#[kani::unwind(n)]` as identity attributes.
+//! `#[kani::proof]`, `#[kani::unwind(n)]`, `#[kani::stub(..)]` and `#[kani::solver(..)]` as identity attributes.
 //!
 //! Under the stub (`--cfg kani --cfg kani_stub`) the harnesses only need to type-check, so each
 //! attribute returns the item unchanged. Real Kani supplies its own macros.
@@ -23,5 +23,11 @@ pub fn unwind(_attr: TokenStream, item: TokenStream) -> TokenStream {
 /// ignores it.
 #[proc_macro_attribute]
 pub fn stub(_attr: TokenStream, item: TokenStream) -> TokenStream {
+    item
+}
+
+/// Selects the SAT solver of a harness (`#[kani::solver(kissat)]`); the stub ignores it.
+#[proc_macro_attribute]
+pub fn solver(_attr: TokenStream, item: TokenStream) -> TokenStream {
     item
 }
