@@ -19,6 +19,7 @@
 
 pub mod committed;
 pub mod decoded;
+pub mod libfuzzer_log;
 mod input;
 pub mod replay;
 pub mod seeds;
