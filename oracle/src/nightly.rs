@@ -15,12 +15,13 @@
 //!    ([`committed::write_regression`]: replayed by `cargo test`, `tests/tests/fuzz_replay.rs`:
 //!    commit it), with the target's report on it in this build;
 //! 5. `OUT/summary.json` and `OUT/summary.txt`: per target the executions, execs/s, libFuzzer's
-//!    coverage (`cov`: edges, `ft`: features), peak RSS, corpus size before and after `cmin`,
-//!    findings ([`parse_stats`] reads libFuzzer's output in both modes).
+//!    coverage (`cov`: edges, `ft`: features), peak RSS (libFuzzer's, else sampled: [`rss`]),
+//!    corpus size before and after `cmin`, findings ([`parse_stats`] reads libFuzzer's output in
+//!    both modes).
 //!
 //! The exit code is 1 when anything was found or a step failed, else 0.
 
-use crate::fuzzing::committed;
+use crate::fuzzing::{committed, rss};
 pub use crate::fuzzing::libfuzzer_log::{parse_stats, Stats};
 use crate::fuzzing::Target;
 use serde::Serialize;
@@ -65,6 +66,9 @@ pub struct TargetSummary {
     pub seconds: f64,
     pub fuzz_exit: Option<i32>,
     pub stats: Stats,
+    /// The peak RSS of the target's processes as `cyclecheck fuzz` sampled it ([`rss`]): the
+    /// summary's figure when libFuzzer printed none (fork mode).
+    pub sampled_peak_rss_mb: Option<u64>,
     /// Files in the scratch corpus before and after `cmin`.
     pub corpus_files: (usize, usize),
     pub corpus_bytes: (u64, u64),
@@ -88,12 +92,23 @@ fn cargo_fuzz(plan: &Plan, args: &[String]) -> Command {
 }
 
 /// Runs a command, its stdout and stderr together, and returns (exit code, output).
-fn run_logged(mut cmd: Command, log: &Path) -> Result<(Option<i32>, String), String> {
-    let out = cmd.output().map_err(|e| format!("cannot run {cmd:?}: {e}"))?;
+fn run_logged(cmd: Command, log: &Path) -> Result<(Option<i32>, String), String> {
+    run_sampled(cmd, log, None).map(|(code, text, _)| (code, text))
+}
+
+/// [`run_logged`], and with `Some(name)` the peak RSS in MB of its processes named `name`
+/// ([`rss`]).
+fn run_sampled(mut cmd: Command, log: &Path, name: Option<&str>) -> Result<(Option<i32>, String, Option<u64>), String> {
+    use std::process::Stdio;
+    let child = cmd.stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().map_err(|e| format!("cannot run {cmd:?}: {e}"))?;
+    let sampler = name.map(|n| rss::start(child.id(), n));
+    let out = child.wait_with_output().map_err(|e| format!("cannot run {cmd:?}: {e}"));
+    let peak = sampler.and_then(rss::Sampler::finish);
+    let out = out?;
     let mut text = String::from_utf8_lossy(&out.stdout).into_owned();
     text.push_str(&String::from_utf8_lossy(&out.stderr));
     let _ = std::fs::write(log, &text);
-    Ok((out.status.code(), text))
+    Ok((out.status.code(), text, peak))
 }
 
 fn features_args(plan: &Plan) -> Vec<String> {
@@ -112,6 +127,7 @@ pub fn run_target(plan: &Plan, target: Target) -> TargetSummary {
         seconds: 0.0,
         fuzz_exit: None,
         stats: Stats::default(),
+        sampled_peak_rss_mb: None,
         corpus_files: (0, 0),
         corpus_bytes: (0, 0),
         findings: Vec::new(),
@@ -143,10 +159,11 @@ pub fn run_target(plan: &Plan, target: Target) -> TargetSummary {
     if plan.fork > 1 {
         args.push(format!("-fork={}", plan.fork));
     }
-    match run_logged(cargo_fuzz(plan, &args), &logs.join(format!("{name}.run.log"))) {
-        Ok((code, log)) => {
+    match run_sampled(cargo_fuzz(plan, &args), &logs.join(format!("{name}.run.log")), Some(name)) {
+        Ok((code, log, peak)) => {
             summary.fuzz_exit = code;
             summary.stats = parse_stats(&log);
+            summary.sampled_peak_rss_mb = peak;
             if summary.stats.executions == 0 {
                 summary.errors.push(format!("no executions (exit {code:?}); see logs/{name}.run.log"));
             }
@@ -263,7 +280,7 @@ pub fn summary_text(plan: &Plan, summaries: &[TargetSummary]) -> String {
             s.corpus_files.0,
             s.corpus_files.1,
             s.findings.len(),
-            s.stats.peak_rss_mb.map_or("-".to_string(), |r| r.to_string())
+            s.stats.peak_rss_mb.or(s.sampled_peak_rss_mb).map_or("-".to_string(), |r| r.to_string())
         );
     }
     for s in summaries.iter().filter(|s| s.stats.fork > 0) {
@@ -353,6 +370,7 @@ mod tests {
             seconds: 5.0,
             fuzz_exit: Some(77),
             stats: Stats { executions: 10, execs_per_sec: 2, coverage_edges: 3, features: 4, new_units: 0, peak_rss_mb: Some(612), fork: 2, jobs: 5, ooms: 1, ..Stats::default() },
+            sampled_peak_rss_mb: Some(700),
             corpus_files: (9, 7),
             corpus_bytes: (90, 70),
             findings: vec![Finding { artifact: "a/crash-1".into(), minimized: None, regression: "r/crash-1".into(), report: "DIVERGE".into() }],

@@ -22,6 +22,7 @@ pub mod decoded;
 pub mod libfuzzer_log;
 mod input;
 pub mod replay;
+pub mod rss;
 pub mod seeds;
 
 pub use input::CycleInput;
