@@ -5,20 +5,24 @@
 //! 1. the committed decoded seeds (`fuzz/seeds/TARGET/`) are encoded into libFuzzer's corpus
 //!    folder `fuzz/corpus/TARGET/` ([`committed::encode_corpus`]; not committed);
 //! 2. `cargo +nightly fuzz run TARGET OUT/corpus/TARGET fuzz/corpus/TARGET -- -max_total_time=B
-//!    -dict=fuzz/gcode.dict -artifact_prefix=OUT/artifacts/TARGET/ -print_final_stats=1`:
-//!    libFuzzer writes new inputs to the scratch corpus (kept across nights when OUT is) and only
-//!    reads the seeds; a crash or divergence stops the target's run;
+//!    -dict=fuzz/gcode.dict -artifact_prefix=OUT/artifacts/TARGET/ -print_final_stats=1
+//!    -rss_limit_mb=MB [-fork=N]`: libFuzzer writes new inputs to the scratch corpus (kept across
+//!    nights when OUT is) and only reads the seeds; a crash or divergence stops the target's run
+//!    (with `-fork`, an out-of-memory or timed-out job does not: libFuzzer counts it and goes on);
 //! 3. `cargo +nightly fuzz cmin TARGET OUT/corpus/TARGET`: minimizes the scratch corpus;
 //! 4. each finding (`crash-*`, `timeout-*`, `oom-*`, `leak-*` artifact) is minimized with
 //!    `cargo +nightly fuzz tmin` and written decoded to `tests/fuzz_regressions/TARGET/`
 //!    ([`committed::write_regression`]: replayed by `cargo test`, `tests/tests/fuzz_replay.rs`:
 //!    commit it), with the target's report on it in this build;
 //! 5. `OUT/summary.json` and `OUT/summary.txt`: per target the executions, execs/s, libFuzzer's
-//!    coverage (`cov`: edges, `ft`: features), corpus size before and after `cmin`, findings.
+//!    coverage (`cov`: edges, `ft`: features), peak RSS (libFuzzer's, else sampled: [`rss`]),
+//!    corpus size before and after `cmin`, findings ([`parse_stats`] reads libFuzzer's output in
+//!    both modes).
 //!
 //! The exit code is 1 when anything was found or a step failed, else 0.
 
-use crate::fuzzing::committed;
+use crate::fuzzing::{committed, rss};
+pub use crate::fuzzing::libfuzzer_log::{parse_stats, Stats};
 use crate::fuzzing::Target;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -37,18 +41,10 @@ pub struct Plan {
     pub features: Option<String>,
     /// The repository root (holds `fuzz/`).
     pub root: PathBuf,
-}
-
-/// libFuzzer's figures for one run, as it printed them.
-#[derive(Clone, Debug, Default, PartialEq, Serialize)]
-pub struct Stats {
-    pub executions: u64,
-    pub execs_per_sec: u64,
-    /// Covered edges (`cov:`) and features (`ft:`) at the last status line.
-    pub coverage_edges: u64,
-    pub features: u64,
-    pub new_units: u64,
-    pub peak_rss_mb: u64,
+    /// libFuzzer's `-fork=N` (jobs in parallel); 1: one process, no `-fork`.
+    pub fork: u32,
+    /// libFuzzer's `-rss_limit_mb` (0: none).
+    pub rss_limit_mb: u64,
 }
 
 /// One finding, minimized and written decoded into the regression folder.
@@ -70,47 +66,15 @@ pub struct TargetSummary {
     pub seconds: f64,
     pub fuzz_exit: Option<i32>,
     pub stats: Stats,
+    /// The peak RSS of the target's processes as `cyclecheck fuzz` sampled it ([`rss`]): the
+    /// summary's figure when libFuzzer printed none (fork mode).
+    pub sampled_peak_rss_mb: Option<u64>,
     /// Files in the scratch corpus before and after `cmin`.
     pub corpus_files: (usize, usize),
     pub corpus_bytes: (u64, u64),
     pub findings: Vec<Finding>,
     /// Steps that failed to run (not findings): cargo errors and the like.
     pub errors: Vec<String>,
-}
-
-/// Reads libFuzzer's output: the last status line (`#N ... cov: C ft: F corp: ... exec/s: E`)
-/// and the final stats (`stat::number_of_executed_units: N`, …), which take precedence.
-pub fn parse_stats(log: &str) -> Stats {
-    let mut s = Stats::default();
-    let field = |line: &str, key: &str| -> Option<u64> {
-        let mut words = line.split_whitespace();
-        words.by_ref().find(|w| *w == key)?;
-        words.next()?.parse().ok()
-    };
-    for line in log.lines() {
-        if let Some(rest) = line.strip_prefix('#') {
-            if let Some(n) = rest.split_whitespace().next().and_then(|n| n.parse().ok()) {
-                s.executions = n;
-            }
-            s.coverage_edges = field(line, "cov:").unwrap_or(s.coverage_edges);
-            s.features = field(line, "ft:").unwrap_or(s.features);
-            s.execs_per_sec = field(line, "exec/s:").unwrap_or(s.execs_per_sec);
-        }
-        let stat = |key: &str| line.strip_prefix(key).and_then(|v| v.trim().parse().ok());
-        if let Some(v) = stat("stat::number_of_executed_units:") {
-            s.executions = v;
-        }
-        if let Some(v) = stat("stat::average_exec_per_sec:") {
-            s.execs_per_sec = v;
-        }
-        if let Some(v) = stat("stat::new_units_added:") {
-            s.new_units = v;
-        }
-        if let Some(v) = stat("stat::peak_rss_mb:") {
-            s.peak_rss_mb = v;
-        }
-    }
-    s
 }
 
 fn dir_size(dir: &Path) -> (usize, u64) {
@@ -128,12 +92,23 @@ fn cargo_fuzz(plan: &Plan, args: &[String]) -> Command {
 }
 
 /// Runs a command, its stdout and stderr together, and returns (exit code, output).
-fn run_logged(mut cmd: Command, log: &Path) -> Result<(Option<i32>, String), String> {
-    let out = cmd.output().map_err(|e| format!("cannot run {cmd:?}: {e}"))?;
+fn run_logged(cmd: Command, log: &Path) -> Result<(Option<i32>, String), String> {
+    run_sampled(cmd, log, None).map(|(code, text, _)| (code, text))
+}
+
+/// [`run_logged`], and with `Some(name)` the peak RSS in MB of its processes named `name`
+/// ([`rss`]).
+fn run_sampled(mut cmd: Command, log: &Path, name: Option<&str>) -> Result<(Option<i32>, String, Option<u64>), String> {
+    use std::process::Stdio;
+    let child = cmd.stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().map_err(|e| format!("cannot run {cmd:?}: {e}"))?;
+    let sampler = name.map(|n| rss::start(child.id(), n));
+    let out = child.wait_with_output().map_err(|e| format!("cannot run {cmd:?}: {e}"));
+    let peak = sampler.and_then(rss::Sampler::finish);
+    let out = out?;
     let mut text = String::from_utf8_lossy(&out.stdout).into_owned();
     text.push_str(&String::from_utf8_lossy(&out.stderr));
     let _ = std::fs::write(log, &text);
-    Ok((out.status.code(), text))
+    Ok((out.status.code(), text, peak))
 }
 
 fn features_args(plan: &Plan) -> Vec<String> {
@@ -152,6 +127,7 @@ pub fn run_target(plan: &Plan, target: Target) -> TargetSummary {
         seconds: 0.0,
         fuzz_exit: None,
         stats: Stats::default(),
+        sampled_peak_rss_mb: None,
         corpus_files: (0, 0),
         corpus_bytes: (0, 0),
         findings: Vec::new(),
@@ -178,11 +154,16 @@ pub fn run_target(plan: &Plan, target: Target) -> TargetSummary {
         "-print_final_stats=1".to_string(),
         "-timeout=20".to_string(),
         "-max_len=2048".to_string(),
+        format!("-rss_limit_mb={}", plan.rss_limit_mb),
     ]);
-    match run_logged(cargo_fuzz(plan, &args), &logs.join(format!("{name}.run.log"))) {
-        Ok((code, log)) => {
+    if plan.fork > 1 {
+        args.push(format!("-fork={}", plan.fork));
+    }
+    match run_sampled(cargo_fuzz(plan, &args), &logs.join(format!("{name}.run.log")), Some(name)) {
+        Ok((code, log, peak)) => {
             summary.fuzz_exit = code;
             summary.stats = parse_stats(&log);
+            summary.sampled_peak_rss_mb = peak;
             if summary.stats.executions == 0 {
                 summary.errors.push(format!("no executions (exit {code:?}); see logs/{name}.run.log"));
             }
@@ -263,6 +244,8 @@ pub fn run(plan: &Plan) -> (Vec<TargetSummary>, String) {
     let json = serde_json::json!({
         "budget_seconds_per_target": plan.budget,
         "features": plan.features,
+        "fork": plan.fork,
+        "rss_limit_mb": plan.rss_limit_mb,
         "targets": summaries,
     });
     let _ = std::fs::write(plan.out.join("summary.json"), serde_json::to_string_pretty(&json).unwrap_or_default());
@@ -274,15 +257,21 @@ pub fn run(plan: &Plan) -> (Vec<TargetSummary>, String) {
 pub fn summary_text(plan: &Plan, summaries: &[TargetSummary]) -> String {
     use std::fmt::Write as _;
     let mut t = format!(
-        "cyclecheck fuzz: {} s per target{}\n",
+        "cyclecheck fuzz: {} s per target{}{}, RSS limit {}\n",
         plan.budget,
-        plan.features.as_deref().map(|f| format!(", features {f}")).unwrap_or_default()
+        plan.features.as_deref().map(|f| format!(", features {f}")).unwrap_or_default(),
+        if plan.fork > 1 { format!(", -fork={}", plan.fork) } else { String::new() },
+        if plan.rss_limit_mb > 0 { format!("{} MB", plan.rss_limit_mb) } else { "none".to_string() }
     );
-    let _ = writeln!(t, "{:16} {:>10} {:>8} {:>6} {:>7} {:>15} {:>8}", "target", "execs", "exec/s", "cov", "ft", "corpus (cmin)", "findings");
+    let _ = writeln!(
+        t,
+        "{:16} {:>10} {:>8} {:>6} {:>7} {:>15} {:>8} {:>7}",
+        "target", "execs", "exec/s", "cov", "ft", "corpus (cmin)", "findings", "rss MB"
+    );
     for s in summaries {
         let _ = writeln!(
             t,
-            "{:16} {:>10} {:>8} {:>6} {:>7} {:>6} → {:>6} {:>8}",
+            "{:16} {:>10} {:>8} {:>6} {:>7} {:>6} → {:>6} {:>8} {:>7}",
             s.target,
             s.stats.executions,
             s.stats.execs_per_sec,
@@ -290,8 +279,13 @@ pub fn summary_text(plan: &Plan, summaries: &[TargetSummary]) -> String {
             s.stats.features,
             s.corpus_files.0,
             s.corpus_files.1,
-            s.findings.len()
+            s.findings.len(),
+            s.stats.peak_rss_mb.or(s.sampled_peak_rss_mb).map_or("-".to_string(), |r| r.to_string())
         );
+    }
+    for s in summaries.iter().filter(|s| s.stats.fork > 0) {
+        let st = &s.stats;
+        let _ = writeln!(t, "{}: {} jobs; oom/timeout/crash {}/{}/{}", s.target, st.jobs, st.ooms, st.timeouts, st.crashes);
     }
     for s in summaries {
         for f in &s.findings {
@@ -308,12 +302,14 @@ pub fn summary_text(plan: &Plan, summaries: &[TargetSummary]) -> String {
 pub const DEFAULT_BUDGET: u64 = 300;
 /// Where the scratch corpora, artifacts, logs and summary go by default.
 pub const DEFAULT_OUT: &str = "cyclecheck-out/fuzz";
+/// libFuzzer's own default `-rss_limit_mb`.
+pub const DEFAULT_RSS_LIMIT_MB: u64 = 2048;
 
 /// What `cyclecheck fuzz` was asked to do.
 #[derive(Clone, Debug)]
 pub enum Request {
     /// A campaign over `plan` (its root is filled in by [`command`]).
-    Campaign { budget: u64, targets: Vec<Target>, out: PathBuf, features: Option<String> },
+    Campaign { budget: u64, targets: Vec<Target>, out: PathBuf, features: Option<String>, fork: u32, rss_limit_mb: u64 },
     /// `--write-seeds`.
     WriteSeeds,
     /// `--decode TARGET FILE [NAME]`.
@@ -350,7 +346,9 @@ pub fn command(c: Request) -> Result<u8, String> {
             println!("wrote {}/{name}: {report}", committed::regressions_dir(&root, target).display());
             return Ok(0);
         }
-        Request::Campaign { budget, targets, out, features } => Plan { budget, targets, out, features, root },
+        Request::Campaign { budget, targets, out, features, fork, rss_limit_mb } => {
+            Plan { budget, targets, out, features, root, fork, rss_limit_mb }
+        }
     };
     std::fs::create_dir_all(&plan.out).map_err(|e| format!("{}: {e}", plan.out.display()))?;
     let (summaries, text) = run(&plan);
@@ -365,27 +363,14 @@ mod tests {
     use super::*;
 
     #[test]
-    fn reads_libfuzzer_output() {
-        let log = "INFO: Seed: 1\n#2\tINITED cov: 100 ft: 120 corp: 3/10b exec/s: 0 rss: 30Mb\n\
-            #4096\tpulse  cov: 350 ft: 900 corp: 40/2Kb lim: 43 exec/s: 2048 rss: 40Mb\n\
-            #9000\tDONE   cov: 360 ft: 950 corp: 42/2Kb lim: 43 exec/s: 1500 rss: 41Mb\n\
-            Done 9000 runs in 6 second(s)\nstat::number_of_executed_units: 9001\n\
-            stat::average_exec_per_sec:     1500\nstat::new_units_added:          39\nstat::peak_rss_mb:              41\n";
-        assert_eq!(
-            parse_stats(log),
-            Stats { executions: 9001, execs_per_sec: 1500, coverage_edges: 360, features: 950, new_units: 39, peak_rss_mb: 41 }
-        );
-        assert_eq!(parse_stats("nothing here"), Stats::default());
-    }
-
-    #[test]
     fn text_summary_lists_targets_and_findings() {
-        let plan = Plan { budget: 5, targets: vec![Target::DiffSpecImpl], out: "o".into(), features: None, root: ".".into() };
+        let plan = Plan { budget: 5, targets: vec![Target::DiffSpecImpl], out: "o".into(), features: None, root: ".".into(), fork: 2, rss_limit_mb: 2048 };
         let s = TargetSummary {
             target: "diff_spec_impl",
             seconds: 5.0,
             fuzz_exit: Some(77),
-            stats: Stats { executions: 10, execs_per_sec: 2, coverage_edges: 3, features: 4, new_units: 0, peak_rss_mb: 1 },
+            stats: Stats { executions: 10, execs_per_sec: 2, coverage_edges: 3, features: 4, new_units: 0, peak_rss_mb: Some(612), fork: 2, jobs: 5, ooms: 1, ..Stats::default() },
+            sampled_peak_rss_mb: Some(700),
             corpus_files: (9, 7),
             corpus_bytes: (90, 70),
             findings: vec![Finding { artifact: "a/crash-1".into(), minimized: None, regression: "r/crash-1".into(), report: "DIVERGE".into() }],
@@ -393,5 +378,6 @@ mod tests {
         };
         let t = summary_text(&plan, &[s]);
         assert!(t.contains("diff_spec_impl") && t.contains("9 →      7") && t.contains("FINDING a/crash-1"), "{t}");
+        assert!(t.contains("-fork=2, RSS limit 2048 MB") && t.contains("       1     612\n") && t.contains("5 jobs; oom/timeout/crash 1/0/0"), "{t}");
     }
 }

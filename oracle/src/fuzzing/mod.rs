@@ -19,8 +19,10 @@
 
 pub mod committed;
 pub mod decoded;
+pub mod libfuzzer_log;
 mod input;
 pub mod replay;
+pub mod rss;
 pub mod seeds;
 
 pub use input::CycleInput;

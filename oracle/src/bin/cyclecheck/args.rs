@@ -298,6 +298,12 @@ pub struct FuzzArgs {
     /// Cargo features of the fuzz crate (planted-depth-bug).
     #[arg(long, value_name = "F")]
     pub features: Option<String>,
+    /// Fuzz each target with N jobs in parallel (libFuzzer's -fork=N); 1: one process, no -fork.
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
+    pub fork: u32,
+    /// libFuzzer's -rss_limit_mb: an input using more memory is an oom finding (0: no limit).
+    #[arg(long, value_name = "MB", default_value_t = nightly::DEFAULT_RSS_LIMIT_MB)]
+    pub rss_limit_mb: u64,
     /// Rewrite fuzz/seeds/ from the built-in set and encode them into fuzz/corpus/, then exit.
     #[arg(long, conflicts_with = "decode")]
     pub write_seeds: bool,

@@ -79,5 +79,12 @@ fn fuzz_request(a: args::FuzzArgs) -> Result<nightly::Request, Bad> {
         return Ok(nightly::Request::Decode { target, file: d[1].clone().into(), name: d.get(2).cloned() });
     }
     let targets = a.targets.map_or_else(|| cycle_oracle::fuzzing::Target::ALL.to_vec(), |t| t.0);
-    Ok(nightly::Request::Campaign { budget: a.budget, targets, out: a.out, features: a.features })
+    Ok(nightly::Request::Campaign {
+        budget: a.budget,
+        targets,
+        out: a.out,
+        features: a.features,
+        fork: a.fork,
+        rss_limit_mb: a.rss_limit_mb,
+    })
 }
