@@ -191,6 +191,12 @@ pub const PROPERTIES: &[Property] = &[
         checked_by: CheckedBy::Drivers,
     },
     Property {
+        harness: "peck_counts",
+        rules: &["G74.FORMAT", "G74.PECK", "G74.E", "G74.COLUMN", "G75.FORMAT", "G75.PECK", "G75.COLUMN", "PRJ.MAXPASS"],
+        statement: "One G74/G75 cycle below the lexer: refused exactly in the register's order (no travel on the peck axis, no peck, a step travel without a step, then columns × pecks > max_passes) before any event; else ⌈travel/step⌉ + 1 columns with one header each, ⌈depth/peck⌉ pecks per column, each one peck further toward E, the last exactly at E, none past it; back at A.",
+        checked_by: CheckedBy::Drivers,
+    },
+    Property {
         harness: "g71_layers",
         rules: &["G71.LAYER", "G72.LAYER", "PRJ.MAXPASS"],
         statement: "The G71/G72 layer schedule below the contour geometry: TOO MANY PASSES before motion exactly when layer max_passes exists; layers strictly monotone toward the contour, each depth step exactly Δd, every layer before Q₀, the count the closed form ⌈D/step⌉ − 1 (0 when the cut is not positive); the run's headers, infeeds and cuts.",
