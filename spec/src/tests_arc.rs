@@ -2,6 +2,7 @@
 //! hand, every quadrant by I/K and by R in both directions, ties, the word limits, the checks
 //! and their order.
 
+use crate::tests_util::{alarm_with as alarm_of};
 use crate::arc::{centre_r, turns, Point};
 use crate::expand;
 use cycle_vocab::text::Trace;
@@ -11,13 +12,6 @@ use num_traits::Signed;
 
 fn run(src: &str) -> Trace {
     expand(src.as_bytes(), &Config::default())
-}
-
-type Expect = (AlarmCode, Option<char>, Rule, u32);
-
-fn alarm_of(src: &str, config: &Config) -> Expect {
-    let a = expand(src.as_bytes(), config).alarm.unwrap_or_else(|| panic!("no alarm for {src:?}"));
-    (a.code, a.word.map(char::from), a.rule, a.line)
 }
 
 /// The last move of a program that must run without an alarm.

@@ -1,6 +1,7 @@
 //! Hand-checked G162 (M004) and G32/G33/G34 (M003) programs: every number below is worked out
 //! from docs/INTERPRETATION.md by hand, not taken from the spec's output.
 
+use crate::tests_util::{alarm_with as alarm_of, Expect};
 use crate::expand;
 use cycle_vocab::text::Trace;
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Event, Grid, Increment, MoveKind, Params, Rule, Units};
@@ -22,14 +23,6 @@ fn depths(t: &Trace) -> Vec<i64> {
             _ => None,
         })
         .collect()
-}
-
-/// An alarm as (code, word, rule, line).
-type Expect = (AlarmCode, Option<char>, Rule, u32);
-
-fn alarm_of(src: &str, config: &Config) -> Expect {
-    let a: Alarm = run(src, config).alarm.unwrap_or_else(|| panic!("no alarm for {src:?}"));
-    (a.code, a.word.map(char::from), a.rule, a.line)
 }
 
 /// The register's worked example, pass 1 and pass 6 in full.

@@ -1,9 +1,10 @@
 //! Hand-checked G90 and G94 (M003) programs: every number below is worked out from
 //! docs/INTERPRETATION.md, "G90 and G94", by hand, not taken from the spec's output.
 
+use crate::tests_util::{alarm_with as alarm_of, passes, Expect};
 use crate::expand;
 use cycle_vocab::text::Trace;
-use cycle_vocab::{AlarmCode, Config, Dialect, Event, Grid, Increment, MoveKind, PassKind, Rule, Units};
+use cycle_vocab::{AlarmCode, Config, Dialect, Grid, Increment, MoveKind, PassKind, Rule, Units};
 
 fn run(src: &str) -> Trace {
     expand(src.as_bytes(), &Config::default())
@@ -15,22 +16,7 @@ fn gcode(t: &Trace) -> String {
     t.to_gcode().split_once('\n').map(|(_, rest)| rest.to_string()).unwrap_or_default()
 }
 
-/// An alarm as (code, word, rule, line).
-type Expect = (AlarmCode, Option<char>, Rule, u32);
-
-fn alarm_of(src: &str, config: &Config) -> Expect {
-    let a = expand(src.as_bytes(), config).alarm.unwrap_or_else(|| panic!("no alarm for {src:?}"));
-    (a.code, a.word.map(char::from), a.rule, a.line)
-}
-
 /// The pass headers: (index, kind, diameter depth, rule).
-fn passes(t: &Trace) -> Vec<(u32, PassKind, i64, Rule)> {
-    t.events
-        .iter()
-        .filter_map(|e| if let Event::Pass(p) = e { Some((p.index, p.kind, p.diameter_depth, p.rule)) } else { None })
-        .collect()
-}
-
 /// G90.EXAMPLE: the register's reading of `G90X40.Z-40.I-5.F0.3;35.` from X50 Z2.
 #[test]
 fn g90_seed_taper() {

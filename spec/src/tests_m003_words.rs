@@ -1,20 +1,13 @@
 //! The program words of the stock-removal cycles (M003): sequence numbers, G50, G96/G98 and the
 //! nose-radius codes, checked against docs/INTERPRETATION.md, "Program words".
 
+use crate::tests_util::{alarm_with as alarm_of};
 use crate::expand;
 use cycle_vocab::text::Trace;
 use cycle_vocab::{AlarmCode, Config, Dialect, MoveKind, Params, Rule};
 
 fn run(src: &str) -> Trace {
     expand(src.as_bytes(), &Config::default())
-}
-
-/// An alarm as (code, word, rule, line).
-type Expect = (AlarmCode, Option<char>, Rule, u32);
-
-fn alarm_of(src: &str, config: &Config) -> Expect {
-    let a = expand(src.as_bytes(), config).alarm.unwrap_or_else(|| panic!("no alarm for {src:?}"));
-    (a.code, a.word.map(char::from), a.rule, a.line)
 }
 
 fn moves(t: &Trace) -> Vec<(MoveKind, i64, i64)> {
