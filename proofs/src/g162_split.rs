@@ -151,54 +151,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
         cover!(src, n == m.k && m.d > 0, "the last full pass before a split");
     }
 
-    // The tail, whole: from the last full pass (or from pass 1 when k = 0).
-    let mut r =
-        if m.k >= 1 { Step { n: m.k as u32, depth: kq, last: m.d == 0, rule: Rule::G162Pq, stage: 0 } } else { f };
-    let mut i = if m.k >= 1 { 0 } else { 1 };
-    let mut ended = r.last;
-    let mut steps = 0;
-    while !ended && steps < 5 {
-        steps += 1;
-        let Some(nx) = next(&sp, &r) else {
-            check!(src, false, "a pass that is not at P has a successor");
-            return Ok(());
-        };
-        check!(src, nx.n == r.n + 1, "pass numbers count up by one");
-        check!(src, nx.depth > r.depth && nx.depth <= p, "depths strictly increase and never pass P");
-        check!(src, nx.rule == Rule::G162Split, "split passes name G162.SPLIT");
-        let want = m.tail.get(i).copied();
-        check!(src, want.map(|t| t.0) == Some(nx.depth), "the split passes are the model's kept targets");
-        let e = want.map_or(0, |t| t.1);
-        check!(
-            src,
-            model::is_rounded_target(nx.depth, kq, m.d, e),
-            "each split depth is its exact target rounded once half up"
-        );
-        check!(src, nx.last == (nx.depth == p), "last exactly at depth P");
-        i += 1;
-        r = nx;
-        ended = r.last;
-    }
-    check!(src, ended && r.depth == p, "the last pass is exactly at P");
-    check!(src, next(&sp, &r).is_none(), "nothing after the pass at P");
-    check!(src, i == m.count, "every kept target is cut");
-    check!(src, m.d == 0 || r.depth - kq == m.d, "G162.SPLIT: the split cuts sum exactly to the remainder D");
-
-    // PRJ.MAXPASS.
-    let total = m.k + m.count as i64;
-    let want_count = if total <= i64::from(limit) { Some(total as u32) } else { None };
-    check!(
-        src,
-        pass_count(&sp, limit) == want_count,
-        "PRJ.MAXPASS: pass_count is k + the kept targets, None above the limit"
-    );
-
-    cover!(src, m.k == 0, "Q > P: only split passes");
-    cover!(src, m.d == 0, "zero remainder");
-    cover!(src, m.d > 0 && m.count < 4, "a target dropped (remainder below one increment per cut)");
-    cover!(src, m.count == 4, "all four split passes");
-    cover!(src, want_count.is_none(), "more passes than the limit");
-    Ok(())
+    split_tail(src, &sp, f, &m, (p, kq, limit))
 }
 
 /// The ranges the full-range harness `g162_split_tail` draws from.
@@ -266,14 +219,20 @@ pub fn tail_body<S: Source>(src: &mut S, scope: &TailScope) -> Outcome {
         cover!(src, true, "a full pass before the last");
     }
 
-    // From the last full pass (k ≥ 1, depth kQ) or from pass 1 (k = 0): the split, whole.
-    let mut r = if k >= 1 { Step { n: k as u32, depth: kq, last: d == 0, rule: Rule::G162Pq, stage: 0 } } else { f };
-    let mut i = if k >= 1 { 0 } else { 1 };
+    split_tail(src, &sp, f, &m, (p, kq, limit))
+}
+
+/// The split, whole, from the last full pass (k ≥ 1, depth kQ) or from pass 1 `f` (k = 0), and
+/// the pass count against `limit` — the end of both [`body`] and [`tail_body`].
+fn split_tail<S: Source>(src: &mut S, sp: &SplitParams, f: Step, m: &model::Split, (p, kq, limit): (i64, i64, u32)) -> Outcome {
+    let mut r =
+        if m.k >= 1 { Step { n: m.k as u32, depth: kq, last: m.d == 0, rule: Rule::G162Pq, stage: 0 } } else { f };
+    let mut i = if m.k >= 1 { 0 } else { 1 };
     let mut ended = r.last;
     let mut steps = 0;
     while !ended && steps < 5 {
         steps += 1;
-        let Some(nx) = next(&sp, &r) else {
+        let Some(nx) = next(sp, &r) else {
             check!(src, false, "a pass that is not at P has a successor");
             return Ok(());
         };
@@ -283,25 +242,33 @@ pub fn tail_body<S: Source>(src: &mut S, scope: &TailScope) -> Outcome {
         let want = m.tail.get(i).copied();
         check!(src, want.map(|t| t.0) == Some(nx.depth), "the split passes are the model's kept targets");
         let e = want.map_or(0, |t| t.1);
-        check!(src, model::is_rounded_target(nx.depth, kq, d, e), "each split depth is its exact target rounded once half up");
+        check!(
+            src,
+            model::is_rounded_target(nx.depth, kq, m.d, e),
+            "each split depth is its exact target rounded once half up"
+        );
         check!(src, nx.last == (nx.depth == p), "last exactly at depth P");
         i += 1;
         r = nx;
         ended = r.last;
     }
     check!(src, ended && r.depth == p, "the last pass is exactly at P");
-    check!(src, next(&sp, &r).is_none(), "nothing after the pass at P");
+    check!(src, next(sp, &r).is_none(), "nothing after the pass at P");
     check!(src, i == m.count, "every kept target is cut");
-    check!(src, d == 0 || r.depth - kq == d, "G162.SPLIT: the split cuts sum exactly to the remainder D");
+    check!(src, m.d == 0 || r.depth - kq == m.d, "G162.SPLIT: the split cuts sum exactly to the remainder D");
 
     // PRJ.MAXPASS.
-    let total = k + m.count as i64;
+    let total = m.k + m.count as i64;
     let want_count = if total <= i64::from(limit) { Some(total as u32) } else { None };
-    check!(src, pass_count(&sp, limit) == want_count, "PRJ.MAXPASS: pass_count is k + the kept targets, None above the limit");
+    check!(
+        src,
+        pass_count(sp, limit) == want_count,
+        "PRJ.MAXPASS: pass_count is k + the kept targets, None above the limit"
+    );
 
-    cover!(src, k == 0, "Q > P: only split passes");
-    cover!(src, k >= 1 && d == 0, "zero remainder");
-    cover!(src, d > 0 && m.count < 4, "a target dropped (remainder below one increment per cut)");
+    cover!(src, m.k == 0, "Q > P: only split passes");
+    cover!(src, m.d == 0, "zero remainder");
+    cover!(src, m.d > 0 && m.count < 4, "a target dropped (remainder below one increment per cut)");
     cover!(src, m.count == 4, "all four split passes");
     cover!(src, want_count.is_none(), "more passes than the limit");
     Ok(())
