@@ -351,7 +351,7 @@ fn random_cycles_never_panic_and_return() {
                     close(&mut open, pos);
                     open = cut(p.rule).then_some(pos);
                 }
-                Event::Dwell(_) | Event::Spindle(_) => panic!("no dwell or spindle event in G90/G94"),
+                Event::Dwell(_) | Event::Spindle(_) | Event::Press(_) | Event::Stop(_) | Event::Resume(_) => panic!("no dwell or spindle event in G90/G94"),
                 Event::Move(m) => {
                     if !cut(m.rule) {
                         close(&mut open, pos);

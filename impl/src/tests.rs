@@ -556,6 +556,7 @@ fn no_panic_on_random_input() {
             params,
             start_x: if r & 8 == 0 { 0 } else { extremes[(r >> 8) as usize % extremes.len()] },
             start_z: if r & 16 == 0 { 0 } else { extremes[(r >> 16) as usize % extremes.len()] },
+            operator: cycle_vocab::Script::EMPTY,
         };
         let mut buf = [0u8; 96];
         let soup = round % 2 == 0;

@@ -56,10 +56,10 @@ pub enum Printed {
 
 impl Printed {
     /// What the canonical form prints of `event` (every field but the rule tag); `None` for a
-    /// pass header (a comment).
+    /// pass header and an operator event (comments, compared in the JSON form only).
     pub fn of(event: &Event) -> Option<Printed> {
         match event {
-            Event::Pass(_) => None,
+            Event::Pass(_) | Event::Press(_) | Event::Stop(_) | Event::Resume(_) => None,
             Event::Move(m) => Some(Printed::Motion(Motion::from(m))),
             Event::Dwell(Dwell { ms, rule: _ }) => Some(Printed::Dwell(*ms)),
             Event::Spindle(Spindle { state, rule: _ }) => Some(Printed::Spindle(*state)),

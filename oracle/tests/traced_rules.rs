@@ -29,7 +29,7 @@ fn infeed_points(t: &Trace, start: (i64, i64)) -> Vec<(PassKind, (i64, i64))> {
                 }
                 at = (m.x, m.z);
             }
-            Event::Dwell(_) | Event::Spindle(_) => {}
+            Event::Dwell(_) | Event::Spindle(_) | Event::Press(_) | Event::Stop(_) | Event::Resume(_) => {}
         }
     }
     out

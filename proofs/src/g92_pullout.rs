@@ -180,7 +180,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
                 ended = true;
                 break;
             }
-            Some(Ok(Event::Dwell(_) | Event::Spindle(_))) => {
+            Some(Ok(Event::Dwell(_) | Event::Spindle(_) | Event::Press(_) | Event::Stop(_) | Event::Resume(_))) => {
                 check!(src, false, "PRJ.TRACE: no dwell or spindle event in these cycles");
             }
             Some(Ok(Event::Pass(p))) => {

@@ -30,6 +30,7 @@ fn events(t: &Trace, skip: usize) -> Vec<E> {
             }
             Event::Dwell(d) => E::Dwell(d.ms),
             Event::Spindle(s) => E::Spindle(s.state),
+            Event::Press(_) | Event::Stop(_) | Event::Resume(_) => panic!("no operator event without a script"),
         })
         .collect()
 }

@@ -112,7 +112,7 @@ fn split(events: &[Event]) -> Vec<(Option<cycle_vocab::Pass>, Vec<Move>)> {
         match ev {
             Event::Pass(p) => parts.push((Some(*p), Vec::new())),
             Event::Move(m) => parts.last_mut().expect("a part").1.push(*m),
-            Event::Dwell(_) | Event::Spindle(_) => {}
+            Event::Dwell(_) | Event::Spindle(_) | Event::Press(_) | Event::Stop(_) | Event::Resume(_) => {}
         }
     }
     parts

@@ -121,7 +121,7 @@ fn first_cycle_move(case: &Case) -> Option<Event> {
         match item {
             Ok(Event::Pass(_)) => in_cycle = true,
             Ok(e @ Event::Move(m)) if in_cycle || m.kind == MoveKind::Thread => return Some(e),
-            Ok(Event::Move(_) | Event::Dwell(_) | Event::Spindle(_)) => {}
+            Ok(Event::Move(_) | Event::Dwell(_) | Event::Spindle(_) | Event::Press(_) | Event::Stop(_) | Event::Resume(_)) => {}
             Err(_) => return None,
         }
     }

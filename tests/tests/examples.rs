@@ -60,7 +60,7 @@ fn cuts(trace: &Trace) -> Vec<(PassKind, i64, i64)> {
                     out.push((k, m.x, m.z));
                 }
             }
-            Event::Move(_) | Event::Dwell(_) | Event::Spindle(_) => {}
+            Event::Move(_) | Event::Dwell(_) | Event::Spindle(_) | Event::Press(_) | Event::Stop(_) | Event::Resume(_) => {}
         }
     }
     out
@@ -72,7 +72,7 @@ fn pass_depths(trace: &Trace) -> Vec<(PassKind, i64)> {
         .iter()
         .filter_map(|e| match e {
             Event::Pass(p) => Some((p.kind, p.diameter_depth)),
-            Event::Move(_) | Event::Dwell(_) | Event::Spindle(_) => None,
+            Event::Move(_) | Event::Dwell(_) | Event::Spindle(_) | Event::Press(_) | Event::Stop(_) | Event::Resume(_) => None,
         })
         .collect()
 }

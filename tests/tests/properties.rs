@@ -136,7 +136,7 @@ proptest! {
                         if seen_pass { prop_assert_eq!(pos, (ax, az), "{}", ctx); }
                         seen_pass = true;
                     }
-                    Event::Dwell(_) | Event::Spindle(_) => prop_assert!(false, "no dwell or spindle event in a thread cycle: {}", ctx),
+                    Event::Dwell(_) | Event::Spindle(_) | Event::Press(_) | Event::Stop(_) | Event::Resume(_) => prop_assert!(false, "no dwell or spindle event in a thread cycle: {}", ctx),
                     Event::Move(m) => {
                         if m.kind == MoveKind::Thread {
                             prop_assert_eq!(m.feed, case.lead, "lead kept: {}", ctx);
@@ -507,7 +507,7 @@ proptest! {
             for e in &trace.events[first..] {
                 match e {
                     Event::Pass(_) => prop_assert!(at_s, "each pass starts at S: {}", ctx),
-                    Event::Dwell(_) | Event::Spindle(_) => prop_assert!(false, "no dwell or spindle event in a thread cycle: {}", ctx),
+                    Event::Dwell(_) | Event::Spindle(_) | Event::Press(_) | Event::Stop(_) | Event::Resume(_) => prop_assert!(false, "no dwell or spindle event in a thread cycle: {}", ctx),
                     Event::Move(m) => {
                         prop_assert!(m.kind != MoveKind::Rapid, "no rapid in G162: {}", ctx);
                         if m.kind == MoveKind::Feed {

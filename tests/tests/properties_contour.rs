@@ -61,7 +61,7 @@ fn passes(t: &Trace) -> Vec<(Pass, Vec<Move>)> {
                 }
             }
             // G70–G72 neither dwell nor switch the spindle: such an event is not a move.
-            Event::Dwell(_) | Event::Spindle(_) => panic!("a contour cycle's trace has {e:?}"),
+            Event::Dwell(_) | Event::Spindle(_) | Event::Press(_) | Event::Stop(_) | Event::Resume(_) => panic!("a contour cycle's trace has {e:?}"),
         }
     }
     out

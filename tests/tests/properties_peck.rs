@@ -228,6 +228,7 @@ fn check_drill(c: &Drill, engine: &str, t: &Trace) -> Result<(), TestCaseError> 
                     forward = Some(z);
                 }
             },
+            Event::Press(_) | Event::Stop(_) | Event::Resume(_) => prop_assert!(false, "{}: an operator event without a script", engine),
         }
     }
     prop_assert_eq!(dwells, i64::from(c.p > 0), "{}: dwells", engine);

@@ -42,6 +42,10 @@ pub enum AlarmCode {
     BlockNotFound,
     /// A cycle's contour has more blocks than the documented bound (CNT.MAX).
     ContourTooLong,
+    /// An operator action that cannot happen where the script puts it: on a block the project
+    /// does not model operator events for (OP.SCOPE), at an event that is not a move (OP.AT),
+    /// or never reached (OP.REACH).
+    Operator,
 }
 
 impl AlarmCode {
@@ -64,6 +68,7 @@ impl AlarmCode {
             AlarmCode::TooManyPasses => 3002,
             AlarmCode::Unsupported => 3003,
             AlarmCode::ContourTooLong => 3004,
+            AlarmCode::Operator => 3005,
         }
     }
 
@@ -86,6 +91,7 @@ impl AlarmCode {
             AlarmCode::Unsupported => "function not supported",
             AlarmCode::BlockNotFound => "sequence number not found where the cycle needs it",
             AlarmCode::ContourTooLong => "contour longer than the supported number of blocks",
+            AlarmCode::Operator => "operator event not applicable here",
         }
     }
 }

@@ -14,6 +14,7 @@
 #![forbid(unsafe_code)]
 
 pub mod alarm;
+pub mod operator;
 pub mod params;
 pub mod rule;
 pub mod trace;
@@ -25,5 +26,6 @@ pub mod text;
 pub use alarm::{Alarm, AlarmCode};
 pub use params::{Config, Dialect, Params};
 pub use rule::Rule;
-pub use trace::{Dwell, Event, Move, MoveKind, Pass, PassKind, Spindle, SpindleState};
+pub use operator::{Action, Along, Script};
+pub use trace::{Button, Dwell, Event, Move, MoveKind, Pass, PassKind, Press, Resume, Spindle, SpindleState, Stop, StopReason};
 pub use units::{Grid, Increment, Units};

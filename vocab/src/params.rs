@@ -5,6 +5,7 @@
 //! `impl/src/config.rs`; docs/INTERPRETATION.md, "Parameters and defaults"), so a misread
 //! default or range in one of them shows as a divergence instead of being shared by both.
 
+use crate::operator::Script;
 use crate::units::{Grid, Increment, Units};
 
 /// Input conventions (PRJ.DIALECT).
@@ -100,6 +101,9 @@ pub struct Config {
     /// Machine position when the program starts: X (diameter) and Z, in increments.
     pub start_x: i64,
     pub start_z: i64,
+    /// Operator events while the program runs (OP.SCRIPT); empty: uninterrupted.
+    #[cfg_attr(feature = "std", serde(default, skip_serializing_if = "Script::is_empty"))]
+    pub operator: Script,
 }
 
 impl Default for Config {
@@ -110,6 +114,7 @@ impl Default for Config {
             params: Params::default(),
             start_x: 0,
             start_z: 0,
+            operator: Script::EMPTY,
         }
     }
 }

@@ -18,7 +18,7 @@
 //! non-zero). A pass header prints the radius depth.
 
 use crate::alarm::Alarm;
-use crate::trace::{Event, Move, MoveKind, SpindleState};
+use crate::trace::{Button, Event, Move, MoveKind, SpindleState, StopReason};
 use crate::units::Grid;
 use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
@@ -59,7 +59,7 @@ impl Trace {
     pub fn moves(&self) -> impl Iterator<Item = &Move> {
         self.events.iter().filter_map(|e| match e {
             Event::Move(m) => Some(m),
-            Event::Pass(_) | Event::Dwell(_) | Event::Spindle(_) => None,
+            _ => None,
         })
     }
 
@@ -76,6 +76,18 @@ impl Trace {
                 format!("(PASS {} {} DEPTH {})", p.index, p.kind.name(), depth)
             }
             Event::Dwell(d) => format!("G04 P{}", d.ms),
+            Event::Press(p) => {
+                let button = match p.button {
+                    Button::Hold => "HOLD",
+                    Button::Reset => "RESET",
+                };
+                format!("(PRESS {button} AT X{} Z{})", fixed(p.x, d), fixed(p.z, d))
+            }
+            Event::Stop(s) => match s.reason {
+                StopReason::FeedHold => "(STOP FEED HOLD)".to_string(),
+                StopReason::SingleBlock => "(STOP SINGLE BLOCK)".to_string(),
+            },
+            Event::Resume(_) => "(CYCLE START)".to_string(),
             Event::Spindle(s) => match s.state {
                 SpindleState::Forward => "M03".to_string(),
                 SpindleState::Reverse => "M04".to_string(),

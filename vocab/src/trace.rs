@@ -175,6 +175,55 @@ pub struct Spindle {
     pub rule: Rule,
 }
 
+/// A button the operator pressed (OP.SCRIPT).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "std", serde(rename_all = "SCREAMING_SNAKE_CASE"))]
+pub enum Button {
+    /// Feed hold.
+    Hold,
+    /// Reset (emergency stop, drive alarm): the motion stops at the point; nothing follows.
+    Reset,
+}
+
+/// The operator pressed `button` with the tool at (`x`, `z`) (X diameter, Z, increments). It
+/// comes **before** the move during which it was pressed; that move ends at the point, or runs
+/// on, as `rule` says (register, "Operator events").
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
+pub struct Press {
+    pub button: Button,
+    pub x: i64,
+    pub z: i64,
+    pub rule: Rule,
+}
+
+/// Why the machine stopped and waits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "std", serde(rename_all = "SCREAMING_SNAKE_CASE"))]
+pub enum StopReason {
+    /// A feed hold took effect.
+    FeedHold,
+    /// Single-block mode: the end of a block (or of what the cycle's rule treats as one).
+    SingleBlock,
+}
+
+/// The machine stops where it is and waits for cycle start.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
+pub struct Stop {
+    pub reason: StopReason,
+    pub rule: Rule,
+}
+
+/// Cycle start after a stop: the machine goes on as `rule` says (OP.RESUME, OP.SINGLE, …).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
+pub struct Resume {
+    pub rule: Rule,
+}
+
 /// One trace event.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "std", derive(serde::Serialize, serde::Deserialize))]
@@ -184,6 +233,9 @@ pub enum Event {
     Move(Move),
     Dwell(Dwell),
     Spindle(Spindle),
+    Press(Press),
+    Stop(Stop),
+    Resume(Resume),
 }
 
 impl Event {
@@ -194,6 +246,9 @@ impl Event {
             Event::Move(m) => m.rule,
             Event::Dwell(d) => d.rule,
             Event::Spindle(s) => s.rule,
+            Event::Press(p) => p.rule,
+            Event::Stop(s) => s.rule,
+            Event::Resume(r) => r.rule,
         }
     }
 }

@@ -117,7 +117,7 @@ fn segments(trace: &Trace, start: (i64, i64)) -> Vec<Segment> {
                 pass = Some(p.kind);
                 pass_has_thread = false;
             }
-            Event::Dwell(_) | Event::Spindle(_) => {}
+            Event::Dwell(_) | Event::Spindle(_) | Event::Press(_) | Event::Stop(_) | Event::Resume(_) => {}
             Event::Move(m) => {
                 let first = m.kind == MoveKind::Thread && !pass_has_thread;
                 if m.kind == MoveKind::Thread {

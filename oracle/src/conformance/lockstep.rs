@@ -7,7 +7,7 @@
 //!
 //! [`check`] is the same comparison of two whole traces.
 
-use super::{alarm_field, dwell_field, grid_name, move_field, pass_field, spindle_field, variant, Divergence, DivergenceKind, CONTEXT, END};
+use super::{alarm_field, dwell_field, grid_name, move_field, pass_field, press_field, spindle_field, stop_field, variant, Divergence, DivergenceKind, CONTEXT, END};
 use cycle_vocab::text::Trace;
 use cycle_vocab::{Alarm, Event, Grid, Rule};
 use std::collections::VecDeque;
@@ -142,6 +142,9 @@ impl<I: Iterator<Item = Result<Event, Alarm>>> Lockstep<I> {
                     (Event::Move(rm), Event::Move(cm)) => move_field(rm, cm).map(|f| (DivergenceKind::FieldMismatch, f)),
                     (Event::Dwell(rd), Event::Dwell(cd)) => dwell_field(rd, cd).map(|f| (DivergenceKind::FieldMismatch, f)),
                     (Event::Spindle(rs), Event::Spindle(cs)) => spindle_field(rs, cs).map(|f| (DivergenceKind::FieldMismatch, f)),
+                    (Event::Press(rp), Event::Press(cp)) => press_field(rp, cp).map(|f| (DivergenceKind::FieldMismatch, f)),
+                    (Event::Stop(rs), Event::Stop(cs)) => stop_field(rs, cs).map(|f| (DivergenceKind::FieldMismatch, f)),
+                    (Event::Resume(_), Event::Resume(_)) => None,
                     _ => Some((DivergenceKind::EventKindMismatch, ("event", variant(&r).to_string(), variant(&c).to_string()))),
                 };
                 if let Some((kind, (field, rv, cv))) = field {

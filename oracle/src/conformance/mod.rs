@@ -36,7 +36,7 @@
 //! lines (`cycle_vocab::text`), the reference's rule and a few events of context before it.
 
 use crate::catalogue;
-use cycle_vocab::{Alarm, AlarmCode, Dwell, Event, Grid, Move, MoveKind, Pass, Rule, Spindle};
+use cycle_vocab::{Alarm, AlarmCode, Dwell, Event, Grid, Move, MoveKind, Pass, Press, Rule, Spindle, Stop};
 use std::fmt;
 
 mod lockstep;
@@ -134,6 +134,9 @@ pub(crate) fn variant(e: &Event) -> &'static str {
         Event::Move(_) => "move",
         Event::Dwell(_) => "dwell",
         Event::Spindle(_) => "spindle",
+        Event::Press(_) => "press",
+        Event::Stop(_) => "stop",
+        Event::Resume(_) => "resume",
     }
 }
 
@@ -160,6 +163,18 @@ pub(crate) fn dwell_field(r: &Dwell, c: &Dwell) -> Option<(&'static str, String,
 pub(crate) fn spindle_field(r: &Spindle, c: &Spindle) -> Option<(&'static str, String, String)> {
     let Spindle { state, rule: _ } = *r;
     differ("state", format!("{state:?}"), format!("{:?}", c.state))
+}
+
+/// The first differing field of two button presses (the rule tag is not compared).
+pub(crate) fn press_field(r: &Press, c: &Press) -> Option<(&'static str, String, String)> {
+    let Press { button, x, z, rule: _ } = *r;
+    differ("button", format!("{button:?}"), format!("{:?}", c.button)).or_else(|| differ("x", x, c.x)).or_else(|| differ("z", z, c.z))
+}
+
+/// The first differing field of two stops (the rule tag is not compared).
+pub(crate) fn stop_field(r: &Stop, c: &Stop) -> Option<(&'static str, String, String)> {
+    let Stop { reason, rule: _ } = *r;
+    differ("reason", format!("{reason:?}"), format!("{:?}", c.reason))
 }
 
 fn move_kind(k: MoveKind) -> &'static str {

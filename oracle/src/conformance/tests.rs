@@ -55,6 +55,9 @@ fn rule_tags_are_not_compared() {
             Event::Pass(p) => p.rule = Rule::PrjTrace,
             Event::Dwell(d) => d.rule = Rule::PrjTrace,
             Event::Spindle(s) => s.rule = Rule::PrjTrace,
+            Event::Press(p) => p.rule = Rule::PrjTrace,
+            Event::Stop(s) => s.rule = Rule::PrjTrace,
+            Event::Resume(r) => r.rule = Rule::PrjTrace,
         }
     }
     assert_eq!(check(&g92(), &c), Ok(()));
