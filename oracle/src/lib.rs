@@ -26,6 +26,7 @@ pub mod gen;
 pub mod hint;
 pub mod judge;
 pub mod nightly;
+pub mod operator;
 pub mod reaper;
 pub mod readback;
 pub mod registry;

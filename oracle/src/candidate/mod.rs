@@ -42,6 +42,22 @@ pub const SCHEMA_2: &str = "cyclecheck-candidate/2";
 /// version says which codes a request can hold).
 pub const SCHEMA_3: &str = "cyclecheck-candidate/3";
 
+/// The fourth: version 3 and operator events — `config.operator`, the script (OP.SCRIPT), and
+/// the events `press`, `stop`, `resume` and the alarm `OPERATOR` (3005). A request carries it
+/// whenever its configuration has a script, whatever the program; a candidate that does not
+/// model operator events refuses it and the case is reported as refused, not as a divergence.
+pub const SCHEMA_4: &str = "cyclecheck-candidate/4";
+
+/// The schema a case's request carries: version 4 when the configuration has an operator
+/// script, else the program's ([`schema_for`]).
+pub fn schema_for_case(program: &[u8], config: &Config) -> &'static str {
+    if config.operator.is_empty() {
+        schema_for(program)
+    } else {
+        SCHEMA_4
+    }
+}
+
 /// The schema a program's request carries: version 3 when a block of it writes G73, G74, G75,
 /// G80, G83 or G84, else version 2 when one writes G02, G03, G70, G71 or G72 (read with the
 /// reference's lexer, up to its first lexing alarm), else version 1 — so a candidate that
@@ -99,7 +115,7 @@ impl Default for Limits {
 /// named: those the configuration leaves unset with the reference's defaults.
 pub fn request(id: u64, program: &[u8], config: &Config) -> String {
     let config = Config { params: cycle_spec::config::params(config).as_set(), ..*config };
-    let mut req = serde_json::json!({ "schema": schema_for(program), "id": id, "config": config });
+    let mut req = serde_json::json!({ "schema": schema_for_case(program, &config), "id": id, "config": config });
     match std::str::from_utf8(program) {
         Ok(text) => req["program"] = text.into(),
         Err(_) => req["program_hex"] = program.iter().map(|b| format!("{b:02x}")).collect::<String>().into(),
@@ -427,6 +443,22 @@ mod tests {
         ] {
             assert_eq!(schema_for(program), schema, "{}", String::from_utf8_lossy(program));
         }
+    }
+
+    /// A configuration with an operator script asks for version 4 and carries the script.
+    #[test]
+    fn an_operator_script_asks_for_version_4() {
+        use cycle_vocab::{Action, Along, Script};
+        let script = Script::of(&[Action::Hold(Along { event: 3, num: 1, den: 2 }), Action::Start]).unwrap();
+        let config = Config { operator: script, ..Config::default() };
+        assert_eq!(schema_for_case(b"G0 X1\n", &config), SCHEMA_4);
+        assert_eq!(schema_for_case(b"G0 X1\n", &Config::default()), SCHEMA);
+        let r: serde_json::Value = serde_json::from_str(&request(2, b"G0 X1\n", &config)).unwrap();
+        assert_eq!(r["schema"], SCHEMA_4);
+        assert_eq!(r["config"]["operator"][0]["hold"]["den"], 2);
+        assert_eq!(r["config"]["operator"][1], "start");
+        let plain: serde_json::Value = serde_json::from_str(&request(3, b"G0 X1\n", &Config::default())).unwrap();
+        assert!(plain["config"].get("operator").is_none(), "no script, no field");
     }
 
     #[test]

@@ -57,6 +57,11 @@ fn generators(options: &Options) -> Vec<Generator> {
         .filter(|(_, f)| options.cycles.contains(f))
         .map(|(i, f)| Generator { family: f.name, number: i as u64 + 1, strategy: f.strategy(), count: options.cases })
         .collect();
+    let threads: Vec<&'static registry::Family> = options.cycles.iter().copied().filter(|f| gen::operator::FAMILIES.contains(&f.name)).collect();
+    if !threads.is_empty() {
+        let (number, count) = (FAMILIES.len() as u64 + 1, options.cases.div_ceil(4));
+        g.push(Generator { family: "operator", number, strategy: gen::operator::strategy(threads), count });
+    }
     if options.all_cycles() {
         g.push(Generator { family: "garbage", number: 0, strategy: gen::garbage::strategy(), count: options.cases.div_ceil(5) });
     }
@@ -212,7 +217,7 @@ mod tests {
         let (_, runs) = drain(&Options { cases: 5, ..Options::default() });
         let names: Vec<&str> = runs.iter().map(|r| r.family).collect();
         let mut expected: Vec<&str> = FAMILIES.iter().map(|f| f.name).collect();
-        expected.push("garbage");
+        expected.extend(["operator", "garbage"]);
         assert_eq!(names, expected);
         assert!(runs.iter().all(|r| r.kept == r.drawn), "{runs:?}");
     }

@@ -4,7 +4,8 @@
 //! Rapids are dashed grey, feeds solid grey (arcs drawn as arcs: with the axes scaled
 //! independently a circle is an axis-aligned ellipse), thread moves coloured by the kind of their pass
 //! (rough, finish, spring), pull-outs (moves tagged with a pull-out rule) orange, the infeed
-//! point of each pass (where its first thread move starts) a dot. When the candidate's trace
+//! point of each pass (where its first thread move starts) a dot, a feed hold or reset pressed by
+//! the operator a brown diamond (its retract in the pull-out manner orange). When the candidate's trace
 //! differs, each candidate move that differs from the reference at its index is drawn red and
 //! thick, and the first divergence is labelled.
 //!
@@ -30,8 +31,10 @@ const FINISH: &str = "#2ca02c";
 const SPRING: &str = "#9467bd";
 const PULLOUT: &str = "#ff7f0e";
 const DIVERGENT: &str = "#d62728";
+const PRESS: &str = "#8c564b";
 
-/// Whether a move realises a pull-out (its rule tag).
+/// Whether a move realises a pull-out (its rule tag), the programmed one or the retract in the
+/// pull-out manner after a feed hold (G92.HOLD, G76.HOLD).
 fn is_pullout(rule: Rule) -> bool {
     matches!(
         rule,
@@ -45,6 +48,8 @@ fn is_pullout(rule: Rule) -> bool {
             | Rule::G92Jk7
             | Rule::G76Pullout
             | Rule::G78Pullout
+            | Rule::G92Hold
+            | Rule::G76Hold
     )
 }
 
@@ -295,6 +300,7 @@ pub fn svg(title: &str, config: &Config, reference: &Trace, candidate: Option<&T
             fixed(seg.from.1, reference.grid.decimals())
         );
     }
+    press_marks(&mut s, reference, &px, &py);
     // The candidate's divergent moves.
     for seg in &cands {
         let (tag, geometry) = shape(seg);
@@ -317,6 +323,22 @@ pub fn svg(title: &str, config: &Config, reference: &Trace, candidate: Option<&T
     legend(&mut s, !cands.is_empty());
     s.push_str("</svg>\n");
     s
+}
+
+/// A diamond where the operator pressed feed hold or reset (`Press` events, OP.SCRIPT).
+fn press_marks(s: &mut String, trace: &Trace, px: &dyn Fn(i64) -> f64, py: &dyn Fn(i64) -> f64) {
+    for (index, e) in trace.events.iter().enumerate() {
+        if let Event::Press(p) = e {
+            let (x, y) = (px(p.z), py(p.x));
+            let _ = writeln!(
+                s,
+                r#"<path class="press" d="M{:.2},{:.2} l5,5 l-5,5 l-5,-5 z" fill="{PRESS}"><title>event {index} {}</title></path>"#,
+                x,
+                y - 5.0,
+                escape(&Trace::event_line(trace.grid, e))
+            );
+        }
+    }
 }
 
 fn legend(s: &mut String, divergent: bool) {
@@ -353,6 +375,18 @@ fn legend(s: &mut String, divergent: bool) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A feed hold or reset pressed by the operator is a diamond at its point, titled with it.
+    #[test]
+    fn a_press_is_marked_where_it_happened() {
+        use cycle_vocab::{Button, Press};
+        let p = crate::corpus::find("g92_example").unwrap();
+        let mut t = cycle_spec::expand(p.text.as_bytes(), &p.config());
+        t.events.insert(3, Event::Press(Press { button: Button::Hold, x: 58_700, z: -11_000, rule: Rule::G92Hold }));
+        let svg = svg("hold", &p.config(), &t, None, None);
+        assert_eq!(svg.matches("class=\"press\"").count(), 1);
+        assert!(svg.contains("(PRESS HOLD AT X58.700 Z-11.000)"), "{svg}");
+    }
 
     #[test]
     fn plots_the_g92_example_with_its_parts() {

@@ -28,6 +28,8 @@ pub struct Tally {
     pub grid: BTreeMap<String, usize>,
     pub with_parameters: usize,
     pub with_start: usize,
+    /// Cases run with an operator script (OP.SCRIPT).
+    pub with_operator_script: usize,
 }
 
 impl Tally {
@@ -60,6 +62,7 @@ impl Tally {
         *self.grid.entry(format!("{:?} {:?}", r.config.grid.units, r.config.grid.increment).to_lowercase()).or_default() += 1;
         self.with_parameters += usize::from(r.config.params != Params::default());
         self.with_start += usize::from((r.config.start_x, r.config.start_z) != (0, 0));
+        self.with_operator_script += usize::from(!r.config.operator.is_empty());
     }
 
     /// The configurations the cases ran under, for `evidence.json`.
@@ -69,6 +72,7 @@ impl Tally {
             "grid": self.grid,
             "cases_with_parameters_set": self.with_parameters,
             "cases_with_a_start_point": self.with_start,
+            "cases_with_an_operator_script": self.with_operator_script,
             "default_parameters": cycle_spec::config::DEFAULTS.as_set(),
         })
     }

@@ -36,6 +36,7 @@ pub mod g162;
 pub mod g92;
 pub mod garbage;
 pub mod multipass;
+pub mod operator;
 pub mod peck;
 pub mod single_cut;
 pub mod thread_moves;

@@ -134,6 +134,13 @@ pub struct ConfigArgs {
     /// Machine Z at program start, mm or inch.
     #[arg(long, value_name = "Z", default_value = "0", allow_hyphen_values = true)]
     pub start_z: String,
+    /// An operator action, in the order they happen (repeatable, at most 16; OP.SCRIPT):
+    /// hold:E@F (feed hold at the fraction F — NUM/DEN or a decimal 0…1 — of move E of the
+    /// uninterrupted trace, E its 0-based event index as `--format json` lists them), reset:E@F,
+    /// start (cycle start at the next feed-hold stop), single:on@B / single:off@B (single block
+    /// before event B). Parameter 18 (No.0018 bit 6) picks the G92 feed-hold behaviour.
+    #[arg(long = "op", value_name = "ACTION")]
+    pub ops: Vec<String>,
 }
 
 /// A candidate and its limits (docs/CANDIDATE.md).

@@ -30,6 +30,7 @@ pub fn config(a: &ConfigArgs) -> Result<Config, Bad> {
             return bad(format!("--param {n}: unknown parameter (one of {names})"));
         }
     }
+    c.operator = cycle_oracle::operator::parse_script(&a.ops).map_err(|e| Bad(format!("--op {e}")))?;
     let decimals = c.grid.decimals();
     c.start_x = grid_value(&a.start_x, decimals).map_err(|e| Bad(format!("--start-x {:?}: {e}", a.start_x)))?;
     c.start_z = grid_value(&a.start_z, decimals).map_err(|e| Bad(format!("--start-z {:?}: {e}", a.start_z)))?;

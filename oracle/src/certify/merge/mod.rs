@@ -29,13 +29,20 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 /// A case's place in the whole run: (source, number) — the corpus is source 0, each
-/// generator the next, in run order (the registry's, garbage last).
+/// generator the next, in run order (the registry's, then operator, garbage last).
 type Key = (usize, usize);
 
 fn key(record: &CaseRecord) -> Key {
     match record.origin {
         Origin::Corpus { path } => (0, corpus::PROGRAMS.iter().position(|p| p.path == path).unwrap_or(usize::MAX)),
-        Origin::Generated { family, index } => (1 + FAMILIES.iter().position(|f| f.name == family).unwrap_or(FAMILIES.len()), index as usize),
+        Origin::Generated { family, index } => {
+            let source = match family {
+                "operator" => FAMILIES.len(),
+                "garbage" => FAMILIES.len() + 1,
+                _ => FAMILIES.iter().position(|f| f.name == family).unwrap_or(FAMILIES.len() + 2),
+            };
+            (1 + source, index as usize)
+        }
     }
 }
 

@@ -109,11 +109,12 @@ fn cycle(label: &str) -> Result<CycleRun, String> {
         .ok_or_else(|| format!("unknown cycle {label:?}"))
 }
 
-/// A generator's name as the run's `&'static str`: a registry family or `garbage`.
+/// A generator's name as the run's `&'static str`: a registry family, `operator` or `garbage`.
 pub fn generator(name: &str) -> Result<&'static str, String> {
     match registry::find(name) {
         Some(f) => Ok(f.name),
         None if name == "garbage" => Ok("garbage"),
+        None if name == "operator" => Ok("operator"),
         None => Err(format!("unknown generator {name:?}")),
     }
 }
