@@ -37,6 +37,8 @@ pub enum Generator {
     Soup,
     /// A corpus program with a few bytes changed.
     Mutant,
+    /// A thread family's case with an operator script (`gen::operator::build`).
+    Operator,
 }
 
 impl Generator {
@@ -48,6 +50,7 @@ impl Generator {
             Generator::Multipass => "multipass",
             Generator::Soup => "soup",
             Generator::Mutant => "mutant",
+            Generator::Operator => "operator",
         }
     }
 
@@ -57,13 +60,15 @@ impl Generator {
             Generator::Multipass => gen::multipass::any,
             Generator::Soup => gen::garbage::soup,
             Generator::Mutant => gen::garbage::mutant,
+            Generator::Operator => gen::operator::build,
         }
     }
 }
 
 /// The first byte, modulo 20 plus the families added since ([`added_families`]): 0–6
 /// G76/G78/FANUC G76, 7–10 G92, 11 word soup, 12 corpus mutant, 13–15 literal, 16–17 G162 under
-/// `nc201`, 18–19 G32/G33/G34, then one byte per added family in registry order. Bytes keep
+/// `nc201`, 18–19 G32/G33/G34, then one byte per added family in registry order, then the
+/// `operator` generator (a thread case with an operator script). Bytes keep
 /// their meaning as families are added (the committed seeds' first bytes are < 20; 16–19 came
 /// after the first seeds, the same way).
 const FIRST_BYTES: u8 = 20;
@@ -113,8 +118,8 @@ pub fn literal_bits(config: &Config) -> u8 {
 impl<'a> Arbitrary<'a> for CycleInput {
     fn arbitrary(u: &mut Unstructured<'a>) -> arbitrary::Result<CycleInput> {
         let added = added_families();
-        let last = FIRST_BYTES - 1 + u8::try_from(added.len()).unwrap_or(0);
-        let generator = match u.int_in_range(0..=last)? {
+        let operator = FIRST_BYTES + u8::try_from(added.len()).unwrap_or(0);
+        let generator = match u.int_in_range(0..=operator)? {
             0..=6 => Generator::Multipass,
             7..=10 => family("g92"),
             11 => Generator::Soup,
@@ -126,6 +131,7 @@ impl<'a> Arbitrary<'a> for CycleInput {
             }
             16 | 17 => family("g162"),
             18 | 19 => family("g32"),
+            n if n == operator => Generator::Operator,
             n => Generator::Family(added[usize::from(n - FIRST_BYTES)]),
         };
         let knobs = (0..KNOBS).map(|_| u.arbitrary::<u32>()).collect::<arbitrary::Result<Vec<u32>>>()?;
@@ -217,7 +223,12 @@ mod tests {
         for f in FAMILIES {
             assert!(built.contains(f.name), "no first byte builds {}: {built:?}", f.name);
         }
-        // Past the table the bytes wrap around: the table's length is the byte 0 again.
-        assert_eq!(CycleInput::from_bytes(&[count]), CycleInput::from_bytes(&[0]));
+        // The byte after the families builds a thread case with an operator script; past it the
+        // bytes wrap around to 0.
+        let CycleInput::Built { generator, knobs } = CycleInput::from_bytes(&[count, 0, 0, 0, 0]) else { panic!() };
+        assert_eq!(generator, Generator::Operator);
+        let scripted = (0..40u32).filter(|&k| !gen::build(generator.builder(), &[k, 0, 0, 0]).config.operator.is_empty()).count();
+        assert!(scripted > 0 && knobs.len() == KNOBS, "{scripted}");
+        assert_eq!(CycleInput::from_bytes(&[count + 1]), CycleInput::from_bytes(&[0]));
     }
 }

@@ -15,8 +15,8 @@ use proptest::prelude::*;
 /// The thread families a script is placed on.
 pub const FAMILIES: &[&str] = &["g92", "g76", "g78", "f76", "g162"];
 
-/// Scripted cases drawn from `families` (those of [`FAMILIES`] among them; none → none drawn
-/// from an empty union is avoided by the caller).
+/// Scripted cases drawn from `families` (those of [`FAMILIES`] among them; the caller passes at
+/// least one).
 pub fn strategy(families: Vec<&'static Family>) -> BoxedStrategy<Case> {
     let families: Vec<&'static Family> = families.into_iter().filter(|f| FAMILIES.contains(&f.name)).collect();
     (knobs(), knobs())
@@ -26,6 +26,15 @@ pub fn strategy(families: Vec<&'static Family>) -> BoxedStrategy<Case> {
             scripted(super::build(family.build, &base), &mut dice)
         })
         .boxed()
+}
+
+/// A scripted case from one set of knobs (the fuzz input's `operator` generator): the first
+/// knob picks the family, the next 128 build its case, the rest place the script.
+pub fn build(dice: &mut Dice) -> Case {
+    let name = dice.one_of(FAMILIES);
+    let family = crate::registry::find(name).expect("the thread families are registered");
+    let case = (family.build)(&mut dice.fork(128));
+    scripted(case, dice)
 }
 
 /// `case` with a script placed on its uninterrupted trace, and No.0018 bit 6 drawn.
