@@ -29,6 +29,7 @@
 //! | [`g74`], [`g75`], [`grooving`] | G74.*, G75.* (M003): peck drilling and grooving |
 //! | [`g83`], [`g84`] | G83.*, G84.*, G80 (M003): peck drilling and rigid tapping |
 //! | [`emit`] | PRJ.TRACE, PRJ.NOOP, COM.MULTISTART |
+//! | [`operator`] | OP.*, G92.HOLD, G92.SINGLE, G92.RESET, G76.HOLD, G76.SINGLE, G162.NOSTOP |
 #![forbid(unsafe_code)]
 
 pub mod arc;
@@ -53,6 +54,7 @@ pub mod g92;
 pub mod grooving;
 pub mod lex;
 pub mod multipass;
+pub mod operator;
 pub mod program;
 pub mod pullout;
 pub mod single_cut;
@@ -87,7 +89,17 @@ pub fn expand_into(program: &[u8], config: &Config, sink: &mut dyn FnMut(Event) 
     if let Err(a) = config::check(config) {
         return Some(a);
     }
+    if !config.operator.is_empty() {
+        // OP.SCRIPT: the interrupted run, played over U.
+        return operator::play(program, config, sink);
+    }
     let mut machine = program::Machine::new(config, sink);
+    run_blocks(program, &mut machine)
+}
+
+/// Runs every block of `program` on `machine`, up to the program's end, its first alarm, or the
+/// block in which the sink stopped.
+fn run_blocks(program: &[u8], machine: &mut program::Machine) -> Option<Alarm> {
     let mut src = family::Source::new(program);
     while let Some(block) = src.next_block() {
         let result = match block {
@@ -125,6 +137,8 @@ mod tests_g90;
 mod tests_lex;
 #[cfg(test)]
 mod tests_m003_words;
+#[cfg(test)]
+mod tests_operator;
 #[cfg(test)]
 mod tests_props;
 #[cfg(test)]
