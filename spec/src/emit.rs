@@ -76,7 +76,7 @@ impl<'s> Out<'s> {
             return;
         }
         if let Some(notes) = &mut self.notes {
-            notes.push(self.note);
+            notes.push(Note { start: (self.x, self.z), ..self.note });
         }
         self.count += 1;
         if (self.sink)(event).is_break() {

@@ -85,6 +85,10 @@ pub fn expand(program: &[u8], config: &Config) -> Trace {
 /// memory does not grow with the trace. When `sink` answers `Break` it gets no further event
 /// and the expansion stops after the block it is in (the result is then `None`, unless that
 /// block itself ended in an alarm).
+///
+/// With an operator script in `config` (OP.SCRIPT) the events are those of the interrupted run:
+/// the uninterrupted trace U is expanded whole first, then played under the script
+/// ([`operator`]); a sink's `Break` then ends the run with `None`.
 pub fn expand_into(program: &[u8], config: &Config, sink: &mut dyn FnMut(Event) -> ControlFlow<()>) -> Option<Alarm> {
     if let Err(a) = config::check(config) {
         return Some(a);
@@ -139,6 +143,8 @@ mod tests_lex;
 mod tests_m003_words;
 #[cfg(test)]
 mod tests_operator;
+#[cfg(test)]
+mod tests_operator_cycles;
 #[cfg(test)]
 mod tests_props;
 #[cfg(test)]

@@ -84,7 +84,7 @@ impl Player<'_, '_> {
             // `OPERATOR` on that block's line, no word, rule OP.SCOPE, in place of that event."
             return ControlFlow::Break(Flow::End(Some(Alarm::new(AlarmCode::Operator, None, Rule::OpScope, note.line))));
         }
-        let p = point(self.u.starts[i], self.u.end(i), &along);
+        let p = point(self.u.start(i), self.u.end(i), &along);
         if matches!(action, Action::Reset(_)) {
             return ControlFlow::Break(self.reset(m, p, reset_rule(&note, &m)));
         }
@@ -159,11 +159,11 @@ impl Player<'_, '_> {
             // Not reachable: every move of G92, G76, G78 belongs to a cut.
             return Flow::End(self.unreached());
         };
-        let a = self.u.starts[cut.first];
+        let a = self.u.start(cut.first);
         self.press(Button::Hold, p, rule);
         self.go(ending_at(m, p));
         if let Some(pullout) = self.u.pullout(i) {
-            let (s, e) = (self.u.starts[pullout], self.u.end(pullout));
+            let (s, e) = (self.u.start(pullout), self.u.end(pullout));
             let to = if pullout == i { e } else { (p.0 + (e.0 - s.0), p.1 + (e.1 - s.1)) };
             self.go(Move { rule, ..ending_at(m, to) });
         }

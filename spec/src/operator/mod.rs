@@ -47,7 +47,7 @@ pub fn uninterrupted(program: &[u8], config: &Config) -> Uninterrupted {
     let alarm = crate::run_blocks(program, &mut machine);
     let notes = machine.st.out.take_notes();
     drop(machine);
-    Uninterrupted::new(events, notes, alarm, config.start_x, config.start_z)
+    Uninterrupted { events, notes, alarm }
 }
 
 /// What comes after an event of U.
@@ -99,6 +99,9 @@ impl Player<'_, '_> {
     /// U's event `i`, from the moment the machine is about to begin it to its end.
     fn event(&mut self, i: usize) -> Flow {
         let Some(&event) = self.u.events.get(i) else { return Flow::End(self.program_end()) };
+        // Everything before event i is done (or a retract returned to the cut's start A): the
+        // tool is where U has it (a no-motion block such as G50 may have renamed the position).
+        self.at = self.u.start(i);
         self.switch_single_block(i);
         if let Some(alarm) = self.not_a_move(i).or_else(|| self.single_out_of_scope(i)) {
             return Flow::End(Some(alarm));

@@ -51,6 +51,9 @@ pub struct CutNote {
 pub struct Note {
     /// The line of the block that emitted the event.
     pub line: u32,
+    /// Where the tool is when the event begins (X diameter, Z): the end of the move before it,
+    /// or the position a no-motion block set (G50.COORD).
+    pub start: (i64, i64),
     pub scope: Scope,
     /// The cut (G92, G76, G78), `None` outside one.
     pub cut: Option<CutNote>,
@@ -68,32 +71,19 @@ impl Note {
 }
 
 /// U: the uninterrupted trace of the program and configuration with an empty script, each event
-/// with its note and the position before it.
+/// with its note.
 #[derive(Clone, Debug, Default)]
 pub struct Uninterrupted {
     pub events: Vec<Event>,
     pub notes: Vec<Note>,
-    /// Where the tool is when each event begins (X diameter, Z): the end of the move before it.
-    pub starts: Vec<(i64, i64)>,
     /// The program alarm that ends U, if any.
     pub alarm: Option<cycle_vocab::Alarm>,
 }
 
 impl Uninterrupted {
-    /// U from its events and notes; the machine starts at (`x`, `z`).
-    pub fn new(events: Vec<Event>, notes: Vec<Note>, alarm: Option<cycle_vocab::Alarm>, x: i64, z: i64) -> Uninterrupted {
-        let mut at = (x, z);
-        let starts = events
-            .iter()
-            .map(|e| {
-                let start = at;
-                if let Event::Move(m) = e {
-                    at = (m.x, m.z);
-                }
-                start
-            })
-            .collect();
-        Uninterrupted { events, notes, starts, alarm }
+    /// Where the tool is when event `i` begins.
+    pub fn start(&self, i: usize) -> (i64, i64) {
+        self.notes[i].start
     }
 
     /// The events of the cut event `i` belongs to (empty outside a cut): from its first event to
@@ -107,7 +97,7 @@ impl Uninterrupted {
 
     /// G92.HOLD bit 6 = 1: the cut's last thread move ("the pull-out's end E, or D without one").
     pub fn last_thread_move(&self, i: usize) -> usize {
-        self.cut(i).filter(|&j| matches!(self.events[j], Event::Move(m) if m.kind == MoveKind::Thread)).last().unwrap_or(i)
+        self.cut(i).rev().find(|&j| matches!(self.events[j], Event::Move(m) if m.kind == MoveKind::Thread)).unwrap_or(i)
     }
 
     /// The index of the pull-out of event `i`'s cut, `None` when the cut has none.
@@ -119,7 +109,7 @@ impl Uninterrupted {
     pub fn end(&self, i: usize) -> (i64, i64) {
         match self.events[i] {
             Event::Move(m) => (m.x, m.z),
-            _ => self.starts[i],
+            _ => self.start(i),
         }
     }
 }
