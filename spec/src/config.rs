@@ -140,7 +140,7 @@ fn within(v: i64, lo: i64, hi: i64, word: Option<u8>, rule: Rule) -> Result<(), 
 /// `fanuc` 5143 ∈ {80, 60, 55, 30, 29, 0} (F76.FORMAT), `x_radius` ≤ 1 (NC201.XMODE, every
 /// dialect), 5132 in 1…N and 5133 in 0…N (G71.PARAM), `arc_tolerance` in 0…N (ARC.TOL),
 /// `nose_radius` in 0…N (TNRC.RADIUS), 5135 and 5136 in −N…N (G73.ESCAPE), 5137 in 1…1 000 000
-/// (G73.COUNT), 5139 in 0…N (G74.E). An illegal value is `OUT OF RANGE` on line 0 (the configuration). No.107 is legal in
+/// (G73.COUNT), 5139 in 0…N (G74.E), then the operator script (OP.SCRIPT). An illegal value is `OUT OF RANGE` on line 0 (the configuration). No.107 is legal in
 /// any value up to 999 999; a value other than 0 is refused when a G92 cycle runs (G92.JK.8).
 pub fn check(config: &Config) -> Result<(), Alarm> {
     let p = params(config);
@@ -170,5 +170,5 @@ pub fn check(config: &Config) -> Result<(), Alarm> {
     within(p.p5136_escape_z, -N, N, None, Rule::G73Escape)?;
     within(p.p5137_count, 1, 1_000_000, None, Rule::G73Count)?;
     within(p.p5139_peck_return, 0, N, None, Rule::G74E)?;
-    Ok(())
+    crate::operator::point::check_script(&config.operator)
 }

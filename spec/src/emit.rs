@@ -4,6 +4,8 @@
 //! collects them. A sink that answers `Break` gets no further event: the rest of the block is
 //! still computed (the position stays right), and the program stops after that block.
 
+use crate::operator::note::{CutNote, Note, Scope};
+use crate::pullout::LongAxis;
 use core::ops::ControlFlow;
 use cycle_vocab::{Alarm, AlarmCode, Dwell, Event, Move, MoveKind, Pass, PassKind, Rule, Spindle, SpindleState};
 
@@ -17,6 +19,12 @@ pub struct Out<'s> {
     stopped: bool,
     pub x: i64,
     pub z: i64,
+    /// The index the next emitted event has in the trace.
+    count: usize,
+    /// What the operator player needs to know about the events being emitted (its notes are
+    /// kept only when recording U, [`Out::record`]).
+    note: Note,
+    notes: Option<Vec<Note>>,
 }
 
 /// A coordinate that leaves the i64 range of the trace (possible only for extreme configured
@@ -27,7 +35,34 @@ fn coordinate(v: i128, word: u8, line: u32) -> Result<i64, Alarm> {
 
 impl<'s> Out<'s> {
     pub fn new(x: i64, z: i64, sink: Sink<'s>) -> Out<'s> {
-        Out { sink, stopped: false, x, z }
+        Out { sink, stopped: false, x, z, count: 0, note: Note::default(), notes: None }
+    }
+
+    /// Keeps a [`Note`] for every event emitted from now on: the spec records U, the
+    /// uninterrupted trace, for the operator player (OP.SCRIPT).
+    pub fn record(&mut self) {
+        self.notes = Some(Vec::new());
+    }
+
+    /// The notes kept since [`Out::record`], one per event emitted.
+    pub fn take_notes(&mut self) -> Vec<Note> {
+        self.notes.take().unwrap_or_default()
+    }
+
+    /// OP.SCOPE: the events from here on belong to the block on `line`, of `scope`.
+    pub fn note_block(&mut self, line: u32, scope: Scope) {
+        self.note = Note::block(line, scope);
+    }
+
+    /// G92.HOLD, G76.HOLD: a cut (one start's pass) begins with the next event emitted; its
+    /// long axis is `long` (COM.LONGAXIS).
+    pub fn begin_cut(&mut self, long: LongAxis) {
+        self.note.cut = Some(CutNote { first: self.count, long });
+    }
+
+    /// G162.NOSTOP: the next events are segment `n` (① … ⑤; 0 for the pass header).
+    pub fn segment(&mut self, n: u8) {
+        self.note.segment = n;
     }
 
     /// Whether the sink asked to stop.
@@ -37,7 +72,14 @@ impl<'s> Out<'s> {
 
     /// PRJ.TRACE: hands `event` to the sink, unless it asked to stop.
     fn emit(&mut self, event: Event) {
-        if !self.stopped && (self.sink)(event).is_break() {
+        if self.stopped {
+            return;
+        }
+        if let Some(notes) = &mut self.notes {
+            notes.push(Note { start: (self.x, self.z), ..self.note });
+        }
+        self.count += 1;
+        if (self.sink)(event).is_break() {
             self.stopped = true;
         }
     }
@@ -93,6 +135,15 @@ impl<'s> Out<'s> {
     /// A spindle-synchronized move (`G32`) with `lead` and start `angle` (0.001°).
     pub fn thread(&mut self, x: i128, z: i128, lead: i64, angle: u32, rule: Rule, line: u32) -> Result<(), Alarm> {
         self.go(MoveKind::Thread, x, z, lead, angle, rule, line)
+    }
+
+    /// The pull-out of a cut (G92.PULLOUT, G76.PULLOUT, G78.PULLOUT): a thread move, noted as
+    /// the cut's pull-out S → E for G92.HOLD's retract.
+    pub fn pullout(&mut self, x: i128, z: i128, lead: i64, angle: u32, rule: Rule, line: u32) -> Result<(), Alarm> {
+        self.note.pullout = true;
+        let done = self.thread(x, z, lead, angle, rule, line);
+        self.note.pullout = false;
+        done
     }
 }
 

@@ -217,15 +217,21 @@ pub fn expand(c: &G92Cycle, params: &Params, grid: Grid, out: &mut Out) -> Resul
     // PRJ.MAXPASS: one pass × L starts.
     crate::multipass::check_max_passes(1, c.l as u128, params, b'L', line)?;
 
-    // PRJ.TRACE: one pass, depth = |A.x − C.x| (the X infeed of step ①).
+    // PRJ.TRACE: one pass, depth = |A.x − C.x| (the X infeed of step ①). Each start is a cut
+    // (G92.HOLD), the first one from the pass header on.
+    let long = pullout::long_axis(w, c.r);
+    out.begin_cut(long);
     out.pass(c.index, PassKind::Rough, (ax - cx).abs(), Rule::G92Path, line)?;
     for j in 0..c.l {
+        if j > 0 {
+            out.begin_cut(long);
+        }
         let angle = start_angle(j, c.l);
         out.rapid(cx, az, Rule::G92Path, line)?; // ①
         match segment {
             Some(((start, end), rule)) => {
                 out.thread(start.0, start.1, c.lead, angle, Rule::G92Path, line)?; // ②
-                out.thread(end.0, end.1, c.lead, angle, rule, line)?;
+                out.pullout(end.0, end.1, c.lead, angle, rule, line)?;
             }
             None => out.thread(dx, dz, c.lead, angle, Rule::G92Path, line)?,
         }

@@ -29,6 +29,7 @@
 //! | [`g74`], [`g75`], [`grooving`] | G74.*, G75.* (M003): peck drilling and grooving |
 //! | [`g83`], [`g84`] | G83.*, G84.*, G80 (M003): peck drilling and rigid tapping |
 //! | [`emit`] | PRJ.TRACE, PRJ.NOOP, COM.MULTISTART |
+//! | [`operator`] | OP.*, G92.HOLD, G92.SINGLE, G92.RESET, G76.HOLD, G76.SINGLE, G162.NOSTOP |
 #![forbid(unsafe_code)]
 
 pub mod arc;
@@ -53,6 +54,7 @@ pub mod g92;
 pub mod grooving;
 pub mod lex;
 pub mod multipass;
+pub mod operator;
 pub mod program;
 pub mod pullout;
 pub mod single_cut;
@@ -83,11 +85,25 @@ pub fn expand(program: &[u8], config: &Config) -> Trace {
 /// memory does not grow with the trace. When `sink` answers `Break` it gets no further event
 /// and the expansion stops after the block it is in (the result is then `None`, unless that
 /// block itself ended in an alarm).
+///
+/// With an operator script in `config` (OP.SCRIPT) the events are those of the interrupted run:
+/// the uninterrupted trace U is expanded whole first, then played under the script
+/// ([`operator`]); a sink's `Break` then ends the run with `None`.
 pub fn expand_into(program: &[u8], config: &Config, sink: &mut dyn FnMut(Event) -> ControlFlow<()>) -> Option<Alarm> {
     if let Err(a) = config::check(config) {
         return Some(a);
     }
+    if !config.operator.is_empty() {
+        // OP.SCRIPT: the interrupted run, played over U.
+        return operator::play(program, config, sink);
+    }
     let mut machine = program::Machine::new(config, sink);
+    run_blocks(program, &mut machine)
+}
+
+/// Runs every block of `program` on `machine`, up to the program's end, its first alarm, or the
+/// block in which the sink stopped.
+fn run_blocks(program: &[u8], machine: &mut program::Machine) -> Option<Alarm> {
     let mut src = family::Source::new(program);
     while let Some(block) = src.next_block() {
         let result = match block {
@@ -125,6 +141,10 @@ mod tests_g90;
 mod tests_lex;
 #[cfg(test)]
 mod tests_m003_words;
+#[cfg(test)]
+mod tests_operator;
+#[cfg(test)]
+mod tests_operator_cycles;
 #[cfg(test)]
 mod tests_props;
 #[cfg(test)]

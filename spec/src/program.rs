@@ -15,6 +15,7 @@
 use crate::emit::{Out, Sink};
 use crate::family::{self, BlockIn, Family, Kind, Source, State, Values, Words};
 use crate::lex::{Block, Number};
+use crate::operator::note::{scope_of_cycle, Scope};
 use crate::tnrc::{self, Side};
 use crate::words::{alarm, Read, F, U, W, X, Z};
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Rule, Units};
@@ -77,6 +78,7 @@ impl<'c> Machine<'c> {
         let (codes, end) = self.codes(b)?;
         // The block's kind: its written code, else the modal motion mode.
         let code = codes.first().copied().unwrap_or(self.modal_code());
+        self.st.out.note_block(b.line, scope(code));
         two_motion_codes(b, dialect, codes.len())?;
         let writes_arc = codes.iter().any(|c| matches!(c, Code::Arc { .. }));
         self.st.side = tnrc::check(b, writes_arc, self.st.side, self.st.params().nose_radius)?;
@@ -297,6 +299,16 @@ fn words_allowed(b: &Block, words: &Words) -> Result<(), Alarm> {
 fn kind_of(b: &Block, g: u32) -> Kind {
     let letters = b.letters().iter().filter(|l| l.is_ascii_uppercase()).fold(0u32, |m, &l| m | 1 << (l - b'A'));
     Kind { g, axes: has_axis(b), pq: b.has(b'P') || b.has(b'Q'), letters }
+}
+
+/// OP.SCOPE (PRJ): the operator scope of a block by its code — plain `G00`/`G01`, a thread
+/// cycle G92, G76, G78, G162, or any other block.
+fn scope(code: Code) -> Scope {
+    match code {
+        Code::G00 | Code::G01 => Scope::Plain,
+        Code::Arc { .. } => Scope::Other,
+        Code::Family(_, g) => scope_of_cycle(g),
+    }
 }
 
 /// Whether the block has an axis word X, U, Z or W.

@@ -236,15 +236,21 @@ impl Pass<'_> {
     fn emit(&self, index: u32, depth: i64, rule: Rule, out: &mut Out) -> Result<(), Alarm> {
         let c = self.c;
         let (line, s, h) = (c.line, self.s, c.h);
+        out.segment(0);
         out.pass(index, PassKind::Rough, 2 * depth as i128, rule, line)?;
         let t = z_shift(depth, c.a_half, s);
         let bn = (c.x0 - 2 * s * depth as i128, c.s.1 + t);
+        out.segment(1);
         out.feed(bn.0, bn.1, h, Rule::G162Path, line)?;
         let en = (thread_end_x(bn.0, c.wd), self.ze1 + t);
+        out.segment(2);
         out.variable_thread(en.0, en.1, c.lead, self.angle, self.law, Rule::G162F, line)?;
         let leg = (en.0 + 2 * s * c.v as i128, c.ze + t);
+        out.segment(3);
         out.feed(leg.0, leg.1, h, Rule::G162V, line)?;
+        out.segment(4);
         out.feed(c.s.0, leg.1, h, Rule::G162Retract, line)?;
+        out.segment(5);
         out.feed(c.s.0, c.s.1, h, Rule::G162Path, line)
     }
 }

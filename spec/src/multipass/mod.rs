@@ -304,6 +304,7 @@ pub fn expand(cycle: Cycle, first: &FirstBlock, second: &SecondBlock, config: &C
         index += 1;
         let fl = flank(cycle, set.mode, n as u64 + 1);
         let bn = (infeed_x(cx, s, k, pass.depth), infeed_z(az, s, t(pass.depth, set.a), t_last, fl));
+        out.begin_cut(cut.long());
         out.pass(index, PassKind::Rough, 2 * pass.depth as i128, pass.rule, line)?;
         cut.emit(bn, out)?;
     }
@@ -312,6 +313,7 @@ pub fn expand(cycle: Cycle, first: &FirstBlock, second: &SecondBlock, config: &C
     for f in 0..set.m {
         index += 1;
         let kind = if f == 0 { PassKind::Finish } else { PassKind::Spring };
+        out.begin_cut(cut.long());
         out.pass(index, kind, 2 * k as i128, Rule::G76Finish, line)?;
         cut.emit(bn, out)?;
     }
@@ -333,6 +335,11 @@ struct Cut {
 }
 
 impl Cut {
+    /// COM.LONGAXIS of the cut, for G76.HOLD's retract.
+    fn long(&self) -> pullout::LongAxis {
+        pullout::long_axis(self.w, self.i)
+    }
+
     /// G76.PATH (M001), per start (G76.MULTISTART): [lead-in] rapid A → Bn; thread Bn → En =
     /// Bn + (−i on X, W on Z) with the pull-out; rapid X to A.x; rapid Z to A.z.
     fn emit(&self, bn: (i128, i128), out: &mut Out) -> Result<(), Alarm> {
@@ -344,6 +351,10 @@ impl Cut {
             None => None,
         };
         for j in 0..self.l {
+            if j > 0 {
+                // G76.HOLD: each start is a cut; the pass's first one began at its header.
+                out.begin_cut(self.long());
+            }
             let angle = start_angle(j, self.l);
             if self.e > 0 {
                 // G76.LEADIN: rapid to E beyond Bn on X, then a synchronized X move into Bn.
@@ -355,7 +366,7 @@ impl Cut {
             match segment {
                 Some((start, end)) => {
                     out.thread(start.0, start.1, self.lead, angle, Rule::G76Path, line)?;
-                    out.thread(end.0, end.1, self.lead, angle, self.cycle.pullout_rule(), line)?;
+                    out.pullout(end.0, end.1, self.lead, angle, self.cycle.pullout_rule(), line)?;
                 }
                 None => out.thread(en.0, en.1, self.lead, angle, Rule::G76Path, line)?,
             }
