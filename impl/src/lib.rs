@@ -18,7 +18,9 @@
 //! [`arc`] (G02/G03: centres, tolerance, sweeps, exact roundings), [`contour`] (the contour
 //! buffer, CNT.FIND for G70), `rough` (G71/G72: checks, layer count, layers, semi-finish pass),
 //! `finish` (G70), `g73` (pattern repeating over the contour buffer), `g74` (G74/G75 pecks and
-//! columns), `g83` (peck drilling), `g84` (rigid tapping), `config`.
+//! columns), `g83` (peck drilling), `g84` (rigid tapping), `config`;
+//! `operator` (operator events: feed hold, cycle start, single block, reset — OP.SCRIPT —
+//! between the generators and the caller).
 //!
 //! **Memory.** An [`Expander`] holds the block being read (~0.5 KB), the machine state, what
 //! runs, and the contour buffer of the contour cycles: [`contour::MAX_BLOCKS`] (CNT.MAX,
@@ -344,3 +346,6 @@ mod g83_tests;
 
 #[cfg(test)]
 mod operator_tests;
+
+#[cfg(test)]
+mod operator_cycle_tests;
