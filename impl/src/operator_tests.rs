@@ -320,3 +320,40 @@ fn script_check() {
     let got = run(EXAMPLE, c, &[hold(0, 0, 0)]);
     assert_eq!(got, vec![alarm(AlarmCode::OutOfRange, Rule::G76Defaults, 0)]);
 }
+
+/// Random scripts on the corpus and the cycles here: no panic, the stream ends, and it is no
+/// longer than U's events repeated once per action plus the layer's own events.
+#[test]
+fn random_scripts_end() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../corpus");
+    let mut progs: Vec<(String, Config)> = Vec::new();
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        let src = std::fs::read_to_string(&path).unwrap();
+        let config = if src.contains("G162") { nc201() } else { Config::default() };
+        progs.push((src, config));
+    }
+    progs.push((String::from(EXAMPLE), Config::default()));
+    progs.push((String::from(EXAMPLE), bit6(1)));
+    let mut seed = 0x5eed_u64;
+    for round in 0..3000 {
+        let (src, base) = &progs[round % progs.len()];
+        let n_u = crate::tests::expand(src, *base).events.len() as u64;
+        let mut actions = Vec::new();
+        let count = 1 + crate::tests::xorshift(&mut seed) % 6;
+        for _ in 0..count {
+            let r = crate::tests::xorshift(&mut seed);
+            let event = (r % (n_u + 2)) as u32;
+            let den = 1 + ((r >> 20) % 8) as u32;
+            let num = ((r >> 30) % u64::from(den + 1)) as u32;
+            actions.push(match (r >> 40) % 5 {
+                0 | 1 => hold(event, num, den),
+                2 => Action::Start,
+                3 => single((r >> 50) & 1 == 0, event),
+                _ => reset(event, num, den),
+            });
+        }
+        let t = expand(src, with(*base, &actions));
+        assert!(t.events.len() as u64 <= (n_u + 8) * (count + 1), "{src} {actions:?}");
+    }
+}
