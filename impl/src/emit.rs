@@ -5,7 +5,7 @@
 
 use crate::fixed::start_angle;
 use crate::multipass::Multi;
-use crate::pullout::Offsets;
+use crate::pullout::{z_long, Offsets};
 use cycle_vocab::{Event, Move, Pass, Rule};
 
 /// The geometry of one pass: where the cut starts (C or Bn) and ends (D or En), X on diameter.
@@ -128,6 +128,26 @@ impl Cycle {
         }
     }
 
+    /// What the operator layer reads after an event (G92.HOLD, G76.HOLD): the step of the last
+    /// move emitted (0 approach, 1 lead-in, 2 cut, 3 pull-out, 4 rapid X, 5 rapid Z; a header
+    /// leaves the step of the start it begins, 0), the start, and the pass's fixed geometry.
+    pub fn state(&self) -> CutState {
+        let pull = self.path.pull.map(|o| (add(self.cut.end, o.start), add(self.cut.end, o.end)));
+        CutState {
+            step: self.step.wrapping_sub(1),
+            start: self.start,
+            a: self.path.a,
+            // COM.LONGAXIS as the pull-out was made: W = the cut's Z travel, R = its X travel
+            // on radius (C.x − D.x = 2R for G92, Bn.x − En.x = 2i for G76/G78: exact halves).
+            z_long: z_long(
+                self.cut.end.1.wrapping_sub(self.cut.p0.1),
+                self.cut.p0.0.wrapping_sub(self.cut.end.0) / 2,
+            ),
+            pull,
+            g92: self.path.rule_path == Rule::G92Path,
+        }
+    }
+
     /// The next event of the cycle, updating the machine position; `None` when it is done.
     /// Bounded work: at most `STEPS` (6) skipped moves and one pass change per call.
     #[inline]
@@ -245,6 +265,23 @@ impl Cycle {
         self.step = STEPS;
         n
     }
+}
+
+/// A cycle's state as the operator layer reads it ([`Cycle::state`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CutState {
+    /// The step of the last move emitted (see [`Cycle::state`]).
+    pub step: u8,
+    /// The start (0…L−1) of the pass being cut.
+    pub start: u32,
+    /// The start point A.
+    pub a: (i64, i64),
+    /// COM.LONGAXIS: Z is the long axis.
+    pub z_long: bool,
+    /// The pull-out of the current pass, start S and end E; `None`: no pull-out.
+    pub pull: Option<((i64, i64), (i64, i64))>,
+    /// A G92 cycle (else G76, G78 or FANUC G76).
+    pub g92: bool,
 }
 
 /// The most events of one start: a pass header and one move per step.

@@ -291,6 +291,12 @@ impl Cycle {
         }
     }
 
+    /// The segment (1…5, G162.PATH) of the last move emitted; after a pass header, 0. Read by
+    /// the operator layer (G162.NOSTOP).
+    pub fn segment(&self) -> u8 {
+        self.step
+    }
+
     /// The next event, updating the machine position; `None` when the cycle is done. Bounded
     /// work: at most `STEPS` (5) skipped moves and one pass change per call.
     pub fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {

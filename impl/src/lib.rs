@@ -18,14 +18,19 @@
 //! [`arc`] (G02/G03: centres, tolerance, sweeps, exact roundings), [`contour`] (the contour
 //! buffer, CNT.FIND for G70), `rough` (G71/G72: checks, layer count, layers, semi-finish pass),
 //! `finish` (G70), `g73` (pattern repeating over the contour buffer), `g74` (G74/G75 pecks and
-//! columns), `g83` (peck drilling), `g84` (rigid tapping), `config`.
+//! columns), `g83` (peck drilling), `g84` (rigid tapping), `config`;
+//! `operator` (operator events: feed hold, cycle start, single block, reset — OP.SCRIPT —
+//! between the generators and the caller).
 //!
 //! **Memory.** An [`Expander`] holds the block being read (~0.5 KB), the machine state, what
 //! runs, and the contour buffer of the contour cycles: [`contour::MAX_BLOCKS`] (CNT.MAX,
 //! 1 000) elements of 48 bytes, 48 000 bytes, initialised on the first contour cycle (a
 //! program without one writes none of it; G73 shares it). Nothing else grows with the program:
 //! the canned cycles keep O(1) state (their pass, column, peck) and count their passes in closed
-//! form before any motion.
+//! form before any motion. The operator layer (`operator`, OP.SCRIPT) holds its script
+//! (16 actions), the events of one cut (`emit::START_EVENTS` = 7, for the repeat after a
+//! G92.HOLD/G76.HOLD retract), one event of look-ahead and an output queue of 8 events:
+//! 2 344 bytes, fixed.
 //!
 //! **Magnitudes.** Every word and parameter is at most N = 999 999 999 < 2^30 increments
 //! (COM.RANGES) and the start point too, so a block moves the machine by at most N from where it
@@ -69,6 +74,7 @@ pub mod lex;
 mod modal;
 mod multipass;
 pub mod number;
+mod operator;
 /// Public (hidden) only so that the proof harnesses (`cycle-proofs`) can check the G92 pull-out
 /// amounts and geometry below the lexer; not part of the API.
 #[doc(hidden)]
@@ -92,7 +98,19 @@ use modal::Machine;
 use run::Run;
 
 /// Streaming expansion of a program: one trace event per call of `next`, the alarm last.
+///
+/// With an operator script (`Config::operator`, OP.SCRIPT) the events are those of the
+/// interrupted run ([`operator`]): the uninterrupted stream of [`Core`] passes through the
+/// operator layer. With an empty script the layer is never entered: one branch per event.
 pub struct Expander<'a> {
+    core: Core<'a>,
+    /// The script is not empty: events go through [`operator::Layer`].
+    operated: bool,
+    op: operator::Layer,
+}
+
+/// The uninterrupted expansion (the trace U of OP.SCRIPT): blocks in, events out.
+pub(crate) struct Core<'a> {
     blocks: Blocks<'a>,
     /// The block being read, built in place by the lexer.
     block: Block,
@@ -125,6 +143,30 @@ pub(crate) struct Program<'p, 'a> {
 impl<'a> Expander<'a> {
     pub fn new(program: &'a [u8], config: Config) -> Expander<'a> {
         Expander {
+            core: Core::new(program, config),
+            operated: !config.operator.is_empty(),
+            op: operator::Layer::new(&config),
+        }
+    }
+
+    /// Writes the next events of the stream into `out` and returns how many: the same events,
+    /// in the same order, as the iterator, for a caller that keeps them in a buffer. Whatever
+    /// runs writes into `out` directly (`Run::fill`): a G92/G76/G78 cycle whole starts at a
+    /// time, each event built in place. With an operator script, one event at a time.
+    ///
+    /// Fewer than `out.len()` events (0 included) means the stream ended, or an alarm follows:
+    /// the alarm is returned by the next call as `Err`, after which the stream is over.
+    pub fn fill(&mut self, out: &mut [Event]) -> Result<usize, Alarm> {
+        if !self.operated {
+            return self.core.fill(out);
+        }
+        self.op.fill(&mut self.core, out)
+    }
+}
+
+impl<'a> Core<'a> {
+    fn new(program: &'a [u8], config: Config) -> Core<'a> {
+        Core {
             blocks: Blocks::new(program),
             block: Block::new(),
             machine: Machine::new(config),
@@ -143,14 +185,8 @@ impl<'a> Expander<'a> {
         Some(Err(alarm))
     }
 
-    /// Writes the next events of the stream into `out` and returns how many: the same events,
-    /// in the same order, as the iterator, for a caller that keeps them in a buffer. Whatever
-    /// runs writes into `out` directly (`Run::fill`): a G92/G76/G78 cycle whole starts at a
-    /// time, each event built in place.
-    ///
-    /// Fewer than `out.len()` events (0 included) means the stream ended, or an alarm follows:
-    /// the alarm is returned by the next call as `Err`, after which the stream is over.
-    pub fn fill(&mut self, out: &mut [Event]) -> Result<usize, Alarm> {
+    /// [`Expander::fill`] without an operator script.
+    fn fill(&mut self, out: &mut [Event]) -> Result<usize, Alarm> {
         let mut n = 0;
         while let Some(rest) = out.get_mut(n..).filter(|r| !r.is_empty()) {
             let pos = &mut self.machine.pos;
@@ -192,21 +228,26 @@ impl Iterator for Expander<'_> {
 
     /// The hot path — the next move of a running G92/G76/G78 cycle — is small enough to inline
     /// into the caller's loop, so the event is written straight to where the caller keeps it;
-    /// everything else is `Expander::next_slow`, which dispatches on `Run`.
+    /// everything else is `Core::next_slow`, which dispatches on `Run`.
+    /// With an operator script: one branch, then the operator layer ([`operator::Layer`]).
     #[inline]
     fn next(&mut self) -> Option<Self::Item> {
-        if let Run::Multipass(c) = &mut self.run {
-            if let Some(e) = c.next_event(&mut self.machine.pos) {
+        if self.operated {
+            return self.op.next(&mut self.core);
+        }
+        let core = &mut self.core;
+        if let Run::Multipass(c) = &mut core.run {
+            if let Some(e) = c.next_event(&mut core.machine.pos) {
                 return Some(Ok(e));
             }
             // The cycle is done (a cycle is not fused: it must not be asked again).
-            self.run = Run::Idle;
+            core.run = Run::Idle;
         }
-        self.next_slow()
+        core.next_slow()
     }
 }
 
-impl Expander<'_> {
+impl Core<'_> {
     /// Every event but the hot path's: the configuration check, blocks, the other families,
     /// the end.
     #[inline(never)]
@@ -219,7 +260,7 @@ impl Expander<'_> {
         }
         if !self.checked {
             self.checked = true;
-            if let Err(a) = config::check(&self.machine.config) {
+            if let Err(a) = self.check() {
                 return self.fail(a);
             }
         }
@@ -238,7 +279,7 @@ impl Expander<'_> {
 
     /// [`Expander::fill`] with nothing running: the next block is read without taking an event
     /// from it (`Ok(None)`), so that what it runs writes its own events; before the first block,
-    /// after the end or an alarm, as [`Expander::next_slow`].
+    /// after the end or an alarm, as [`Core::next_slow`].
     #[inline(never)]
     fn fill_slow(&mut self) -> Option<Result<Option<Event>, Alarm>> {
         let steady = self.checked && !self.done && self.pending.is_none();
@@ -252,9 +293,16 @@ impl Expander<'_> {
         self.next_slow().map(|r| r.map(Some))
     }
 
+    /// The configuration check before the first block, then the script's (OP.SCRIPT, after the
+    /// other configuration checks).
+    fn check(&self) -> Result<(), Alarm> {
+        config::check(&self.machine.config)?;
+        operator::check_script(&self.machine.config.operator)
+    }
+
     /// With nothing running: reads the next block into what it runs (possibly
     /// nothing); `false` when the program is over (its end, or the block after M02/M30). An
-    /// alarm is for the caller to [`fail`](Expander::fail) with.
+    /// alarm is for the caller to [`fail`](Core::fail) with.
     fn read_block(&mut self) -> Result<bool, Alarm> {
         if self.ended || !self.blocks.read(&mut self.block)? {
             self.done = true;
@@ -295,3 +343,9 @@ mod g73_tests;
 
 #[cfg(test)]
 mod g83_tests;
+
+#[cfg(test)]
+mod operator_tests;
+
+#[cfg(test)]
+mod operator_cycle_tests;
