@@ -253,3 +253,15 @@ fn random_holds_repeat_the_cut() {
         assert_eq!(filled, t.events);
     }
 }
+
+/// OP.SCRIPT: a press on a move that runs on (bit 6 = 1) leaves the rest of it covering [f, 1]:
+/// a later Hold behind the tool on the same move does not fire (OP.REACH at the end); one ahead
+/// of it does.
+#[test]
+fn nothing_fires_behind_the_tool() {
+    let behind = run(EXAMPLE, bit6(1), &[hold(3, 1, 2), hold(3, 1, 4)]);
+    assert_eq!(behind.iter().filter(|l| l.starts_with("(PRESS")).count(), 1, "{behind:?}");
+    assert!(behind.last().is_some_and(|l| l.contains("OP.REACH")), "{behind:?}");
+    let ahead = run(EXAMPLE, bit6(1), &[hold(3, 1, 4), hold(3, 1, 2), Action::Start]);
+    assert_eq!(ahead.iter().filter(|l| l.starts_with("(PRESS")).count(), 2, "{ahead:?}");
+}

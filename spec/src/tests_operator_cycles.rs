@@ -128,9 +128,9 @@ fn g162_single_block_after_segments_1_4_5() {
     assert_eq!(lines(&t), expected);
 }
 
-/// A Hold while a stop is pending is recorded and adds no stop; a Reset then acts at once. The
-/// second Hold at 1/4 of the move already held at 1/2 still fires: the move was started afresh
-/// and covers [0, 1] (the literal reading of "passes").
+/// A Hold while a stop is pending is recorded and adds no stop; a Reset then acts at once. A
+/// second Hold at 1/4 of the move already held at 1/2 is behind the tool: it does not fire on
+/// this pass of the move ("nothing fires behind the tool"), and the run ends in OP.REACH.
 #[test]
 fn presses_while_a_stop_is_pending() {
     let t = play(EXAMPLE, &bit6(1), &[hold(3, 1, 2), hold(4, 1, 2), Action::Start]);
@@ -138,7 +138,11 @@ fn presses_while_a_stop_is_pending() {
     assert_eq!(l[3..8], ["(PRESS HOLD AT X58.700 Z-11.000) ; G92.HOLD", "G32 X58.700 Z-27.000 F3.0000 ; G92.PATH", "(PRESS HOLD AT X61.700 Z-27.500) ; G92.HOLD", "G32 X64.700 Z-28.000 F3.0000 ; G92.PULLOUT", "(STOP FEED HOLD) ; G92.HOLD"]);
     assert_eq!(t.events.iter().filter(|e| matches!(e, Event::Stop(_))).count(), 1);
     let t = play(EXAMPLE, &bit6(1), &[hold(3, 1, 2), hold(3, 1, 4)]);
-    assert_eq!(lines(&t)[4], "(PRESS HOLD AT X58.700 Z-3.000) ; G92.HOLD");
+    assert_eq!(t.events.iter().filter(|e| matches!(e, Event::Press(_))).count(), 1, "{:?}", lines(&t));
+    assert_eq!(t.alarm, operator_alarm(Rule::OpReach, 0));
+    // Ahead of the tool on the same move it fires.
+    let t = play(EXAMPLE, &bit6(1), &[hold(3, 1, 4), hold(3, 1, 2), Action::Start]);
+    assert_eq!(lines(&t)[3..5], ["(PRESS HOLD AT X58.700 Z-3.000) ; G92.HOLD", "(PRESS HOLD AT X58.700 Z-11.000) ; G92.HOLD"]);
     let t = play(G162, &nc201(), &[hold(3, 1, 2), reset(4, 1, 2)]);
     assert_eq!(lines(&t)[4..], ["G32 X23.000 Z-18.000 F1.5000 ; G162.F", "(PRESS RESET AT X25.000 Z-19.000) ; OP.RESET", "G01 X25.000 Z-19.000 F500.0000 ; G162.V"]);
     assert_eq!(t.alarm, None);

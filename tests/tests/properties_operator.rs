@@ -1,9 +1,9 @@
 //! Properties of operator events (issue #22; register "Operator events"), on both engines, for
 //! feed holds placed on the thread cuts of generated G92, G76, G78 and FANUC G76 cases:
 //!
-//! - G92.HOLD / G76.HOLD, No.0018 bit 6 = 0: the retract never goes deeper than the thread (every
-//!   point it reaches lies on the start's side of the cut's direction through the hold point),
-//!   ends at the start point A, then the stop; after cycle start the run ends **exactly** as the
+//! - G92.HOLD / G76.HOLD, No.0018 bit 6 = 0: the retract in the pull-out manner never goes deeper
+//!   than the thread (it ends on the side of the cut, through the hold point, that the programmed
+//!   pull-out goes to), the retract ends at the start point A, then the stop; after cycle start the run ends **exactly** as the
 //!   uninterrupted trace U, from a cut's first event (a pass header or the rapid leaving A).
 //! - bit 6 = 1: U's events run on unchanged to the cut's last thread move, then the stop; after
 //!   cycle start the rest is U's rest.
@@ -15,10 +15,12 @@ use cycle_vocab::text::Trace;
 use cycle_vocab::{Action, Along, Config, Event, Move, MoveKind, Rule, Script, StopReason};
 use proptest::prelude::*;
 
-fn engines(program: &[u8], config: &Config) -> [(&'static str, Trace); 2] {
-    let spec = cycle_spec::expand(program, config);
-    let imp = Trace::collect(config.grid, cycle_impl::Expander::new(program, *config));
-    [("spec", spec), ("impl", imp)]
+/// Each engine's interrupted trace and its own uninterrupted trace U (rule tags are each
+/// engine's own: the events are compared whole against the same engine's U).
+fn engines(program: &[u8], config: &Config) -> [(&'static str, Trace, Trace); 2] {
+    let plain = Config { operator: Script::EMPTY, ..*config };
+    let run = |c: &Config| Trace::collect(c.grid, cycle_impl::Expander::new(program, *c));
+    [("spec", cycle_spec::expand(program, config), cycle_spec::expand(program, &plain)), ("impl", run(config), run(&plain))]
 }
 
 fn is_pullout(rule: Rule) -> bool {
@@ -58,7 +60,7 @@ fn script(actions: &[Action]) -> Script {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 96, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 160, failure_persistence: None, ..ProptestConfig::default() })]
 
     #[test]
     fn a_hold_pulls_out_returns_and_resumes_as_uninterrupted(knobs in gen::knobs(), pick in any::<u32>(), num in 0u32..=1000, finish in any::<bool>()) {
@@ -68,7 +70,7 @@ proptest! {
         case.config.operator = script(&[Action::Hold(Along { event: e as u32, num, den: 1000 }), Action::Start]);
         let Event::Move(cut) = u.events[e] else { unreachable!() };
         let dir = (cut.x - from.0, cut.z - from.1);
-        for (engine, t) in engines(&case.program, &case.config) {
+        for (engine, t, u) in engines(&case.program, &case.config) {
             let ctx = format!("{engine}: {case:?}\n{}", t.to_gcode());
             prop_assert_eq!(t.alarm, u.alarm, "{}", ctx);
             prop_assert_eq!(&t.events[..e], &u.events[..e], "before the hold: U. {}", ctx);
@@ -85,12 +87,15 @@ proptest! {
                 prop_assert_eq!(&t.events[e + 1..stop], &u.events[e..e + stop - e - 1], "{}", ctx);
                 prop_assert_eq!(moves.last().map(|m| m.kind), Some(MoveKind::Thread), "the stop follows a thread move: {}", ctx);
             } else {
-                let a = (case.config.start_x, case.config.start_z);
-                let a = start_point(&u, e, a);
-                let outward = side(dir, (p.x, p.z), a);
-                for m in moves.iter().skip(1) {
-                    let s = side(dir, (p.x, p.z), (m.x, m.z));
-                    prop_assert!(s == 0 || s == outward, "the retract to X{} Z{} goes deeper than the thread: {}", m.x, m.z, ctx);
+                let a = start_point(&u, e, (case.config.start_x, case.config.start_z));
+                // The retract in the pull-out manner (a thread move tagged G92.HOLD/G76.HOLD)
+                // ends on the side of the cut the programmed pull-out goes to.
+                if let Some(Event::Move(pullout)) = u.events.get(e + 1).filter(|n| matches!(n, Event::Move(m) if is_pullout(m.rule))) {
+                    let outward = side(dir, from, (pullout.x, pullout.z));
+                    for m in moves.iter().filter(|m| m.kind == MoveKind::Thread && matches!(m.rule, Rule::G92Hold | Rule::G76Hold)) {
+                        let s = side(dir, (p.x, p.z), (m.x, m.z));
+                        prop_assert!(s == 0 || s == outward, "the retract to X{} Z{} goes deeper than the thread: {}", m.x, m.z, ctx);
+                    }
                 }
                 let last = moves.last().copied();
                 prop_assert_eq!(last.map(|m| (m.x, m.z)), Some(a), "the retract ends at the start point: {}", ctx);
@@ -105,7 +110,7 @@ proptest! {
         let Some((mut case, u, e, _)) = held_case(&knobs, pick) else { return Ok(()) };
         prop_assume!(u.alarm.is_none());
         case.config.operator = script(&[Action::Reset(Along { event: e as u32, num, den: 7 })]);
-        for (engine, t) in engines(&case.program, &case.config) {
+        for (engine, t, u) in engines(&case.program, &case.config) {
             let ctx = format!("{engine}: {case:?}\n{}", t.to_gcode());
             prop_assert_eq!(t.alarm, None, "{}", ctx);
             let Some(Event::Press(p)) = t.events.get(e) else { return Err(TestCaseError::fail(format!("no press at {e}: {ctx}"))) };
@@ -120,7 +125,7 @@ proptest! {
     fn single_block_only_adds_stops_and_starts(knobs in gen::knobs(), pick in any::<u32>()) {
         let Some((mut case, u, _, _)) = held_case(&knobs, pick) else { return Ok(()) };
         case.config.operator = script(&[Action::SingleBlock { on: true, before: 0 }]);
-        for (engine, t) in engines(&case.program, &case.config) {
+        for (engine, t, u) in engines(&case.program, &case.config) {
             let ctx = format!("{engine}: {case:?}\n{}", t.to_gcode());
             let stops = t.events.iter().filter(|e| matches!(e, Event::Stop(s) if s.reason == StopReason::SingleBlock)).count();
             prop_assert!(stops > 0 || u.alarm.is_some(), "single block stops somewhere: {}", ctx);

@@ -244,7 +244,13 @@ impl Layer {
             if reset {
                 return self.reset(&m, p);
             }
-            return self.hold(core, &m, p, f);
+            self.hold(core, &m, p, f);
+            // OP.SCRIPT: a press on a move that runs on (a deferred stop) leaves the rest of the
+            // move covering [f, 1]: nothing fires behind the tool.
+            if let Phase::Move { from, .. } = &mut self.phase {
+                *from = f;
+            }
+            return;
         }
         self.move_to(m);
         self.end_of_event(core, at_end);

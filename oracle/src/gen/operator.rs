@@ -5,7 +5,8 @@
 //! moves are (placing needs U's indices; the judgement is still the two engines' traces). Holds
 //! and resets land on thread moves, pull-outs (a cut's last thread move), rapids and feeds, at
 //! the fractions that matter — 0, 1, the first and the last increment, halfway — or anywhere;
-//! single block is switched on before a pass header or any event; No.0018 bit 6 is 0 or 1.
+//! single block is switched on before a pass header or any event; No.0018 bit 6 is 0 or 1; now
+//! and then a hold goes anywhere, a pass header or past the end (OP.AT, OP.REACH).
 
 use super::{knobs, Case, Dice};
 use crate::registry::Family;
@@ -63,7 +64,7 @@ pub fn place(events: &[Event], start_x: i64, start_z: i64, dice: &mut Dice) -> S
         let Some(m) = m else { break };
         let at = Along { event: m.index as u32, num: 0, den: 1 };
         let at = fraction(at, m.length, &mut d);
-        let actions: Vec<Action> = match d.weighted(&[6, 1, 2]) {
+        let actions: Vec<Action> = match d.weighted(&[12, 2, 4, 1]) {
             0 => {
                 let mut a = vec![Action::Hold(at)];
                 if !d.chance(10) {
@@ -72,10 +73,12 @@ pub fn place(events: &[Event], start_x: i64, start_z: i64, dice: &mut Dice) -> S
                 a
             }
             1 => vec![Action::Reset(at)],
-            _ => {
+            2 => {
                 let before = d.below(events.len() as u64) as u32;
                 vec![Action::SingleBlock { on: !d.chance(20), before: before.max(from as u32) }]
             }
+            // Anywhere, past the end included: a pass header (OP.AT) or never reached (OP.REACH).
+            _ => vec![Action::Hold(Along { event: d.below(events.len() as u64 + 3) as u32, ..at })],
         };
         for a in actions {
             if script.push(a).is_err() {

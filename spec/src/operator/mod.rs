@@ -127,9 +127,19 @@ impl Player<'_, '_> {
         let mut held_at_end = false;
         while let Some(action) = self.point_action(i, from) {
             self.next += 1;
-            if let Some(resumed_from) = self.fire(i, m, action)? {
-                from = resumed_from;
-                held_at_end |= from.is_end();
+            match self.fire(i, m, action)? {
+                Some(resumed_from) => {
+                    from = resumed_from;
+                    held_at_end |= from.is_end();
+                }
+                // OP.SCRIPT: "An action fired at the fraction f′ of a move that runs on […] leaves
+                // the rest of that move covering [f′, 1] for the actions after it: nothing fires
+                // behind the tool."
+                None => {
+                    if let Action::Hold(along) | Action::Reset(along) = action {
+                        from = Fraction::of(&along);
+                    }
+                }
             }
         }
         self.go(m);
