@@ -180,7 +180,10 @@ mod tests {
         let g92 = CycleRun::Family(registry::find("g92").unwrap());
         assert!(a.iter().all(|p| runs(&p.program, &p.config) == g92));
         assert_eq!(a.iter().filter(|p| matches!(p.origin, Origin::Corpus { .. })).count(), 6);
-        assert_eq!((fa.len(), fa[0].family, fa[0].drawn), (1, "g92", 20));
+        // The family's generator, then the operator generator over the covered thread families.
+        assert_eq!((fa.len(), fa[0].family, fa[0].drawn), (2, "g92", 20));
+        assert_eq!((fa[1].family, fa[1].drawn), ("operator", 5));
+        assert!(a.iter().any(|p| !p.config.operator.is_empty()), "scripted cases are drawn");
         assert!(fa[0].kept >= 15, "{fa:?}");
         let other = Options { seed: 1, ..o.clone() };
         let (c, _) = drain(&other);

@@ -125,6 +125,7 @@ fn add_configurations(t: &mut tally::Tally, doc: &Value) {
     }
     t.with_parameters += c["cases_with_parameters_set"].as_u64().unwrap_or(0) as usize;
     t.with_start += c["cases_with_a_start_point"].as_u64().unwrap_or(0) as usize;
+    t.with_operator_script += c["cases_with_an_operator_script"].as_u64().unwrap_or(0) as usize;
 }
 
 /// Merges the shards into `request.out`; the merged run, as its bundle says.
@@ -226,6 +227,7 @@ pub fn merge(request: &Request) -> Result<Run, String> {
     // The records' configurations are not all known (see `read::record`): the shards' counts are.
     (tally.dialect, tally.grid) = (configurations.dialect, configurations.grid);
     (tally.with_parameters, tally.with_start) = (configurations.with_parameters, configurations.with_start);
+    tally.with_operator_script = configurations.with_operator_script;
     let run = Run {
         candidate: first["candidate"]["name"].as_str().unwrap_or("impl").to_string(),
         candidate_argv: serde_json::from_value(first["candidate"]["command"].clone()).unwrap_or(None),
