@@ -110,7 +110,7 @@ proptest! {
         let Some((mut case, u, e, _)) = held_case(&knobs, pick) else { return Ok(()) };
         prop_assume!(u.alarm.is_none());
         case.config.operator = script(&[Action::Reset(Along { event: e as u32, num, den: 7 })]);
-        for (engine, t, u) in engines(&case.program, &case.config) {
+        for (engine, t, _) in engines(&case.program, &case.config) {
             let ctx = format!("{engine}: {case:?}\n{}", t.to_gcode());
             prop_assert_eq!(t.alarm, None, "{}", ctx);
             let Some(Event::Press(p)) = t.events.get(e) else { return Err(TestCaseError::fail(format!("no press at {e}: {ctx}"))) };
@@ -123,7 +123,7 @@ proptest! {
 
     #[test]
     fn single_block_only_adds_stops_and_starts(knobs in gen::knobs(), pick in any::<u32>()) {
-        let Some((mut case, u, _, _)) = held_case(&knobs, pick) else { return Ok(()) };
+        let Some((mut case, _, _, _)) = held_case(&knobs, pick) else { return Ok(()) };
         case.config.operator = script(&[Action::SingleBlock { on: true, before: 0 }]);
         for (engine, t, u) in engines(&case.program, &case.config) {
             let ctx = format!("{engine}: {case:?}\n{}", t.to_gcode());
