@@ -58,7 +58,7 @@ fn generators(options: &Options) -> Vec<Generator> {
         .map(|(i, f)| Generator { family: f.name, number: i as u64 + 1, strategy: f.strategy(), count: options.cases })
         .collect();
     let threads: Vec<&'static registry::Family> = options.cycles.iter().copied().filter(|f| gen::operator::FAMILIES.contains(&f.name)).collect();
-    if !threads.is_empty() {
+    if options.operator && !threads.is_empty() {
         let (number, count) = (FAMILIES.len() as u64 + 1, options.cases.div_ceil(4));
         g.push(Generator { family: "operator", number, strategy: gen::operator::strategy(threads), count });
     }

@@ -141,7 +141,7 @@ pub fn document(run: &Run, rows: &[Row]) -> Value {
             "process_starts": run.candidate_argv.as_ref().map(|_| run.candidate_starts),
         },
         "parameters": {
-            "cycles": run.options.cycles.iter().map(|f| f.name).collect::<Vec<_>>(),
+            "cycles": run.options.cycle_names(),
             "cases_per_family": run.options.cases,
             "seed": run.options.seed,
             "shard": run.options.shard.map(|s| s.to_string()),

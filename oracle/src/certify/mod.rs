@@ -69,6 +69,9 @@ pub const SHRINK_STEPS: usize = 1000;
 /// The page and `evidence.json` list at most this many failed cases (`cases.jsonl` has all).
 pub const MAX_LISTED_FAILURES: usize = 100;
 
+/// The `--cycles` name of the operator generator.
+pub const OPERATOR: &str = "operator";
+
 /// What to run.
 #[derive(Clone, Debug)]
 pub struct Options {
@@ -77,6 +80,9 @@ pub struct Options {
     pub limits: Limits,
     /// The families covered (`--cycles`), in registry order; all by default.
     pub cycles: Vec<&'static Family>,
+    /// Whether the operator generator runs (`--cycles` all, or naming `operator`): thread cases
+    /// with operator scripts (OP.SCRIPT), over the covered thread families.
+    pub operator: bool,
     /// Generated cases per family (the garbage generator gets a fifth).
     pub cases: u32,
     pub seed: u64,
@@ -94,6 +100,7 @@ impl Default for Options {
             candidate: None,
             limits: Limits::default(),
             cycles: FAMILIES.iter().collect(),
+            operator: true,
             cases: DEFAULT_CASES,
             seed: DEFAULT_SEED,
             max_failures: DEFAULT_MAX_FAILURES,
@@ -109,13 +116,24 @@ impl Options {
         self.cycles.len() == FAMILIES.len()
     }
 
-    /// Parses `--cycles`: `all` or a comma list of family names ([`registry::names`]).
+    /// Parses `--cycles`: `all` or a comma list of family names ([`registry::names`]) and
+    /// `operator` (the operator generator, [`Options::operator`]; `all` includes it).
     pub fn parse_cycles(list: &str) -> Result<Vec<&'static Family>, String> {
         let names: Vec<&str> = list.split(',').map(str::trim).collect();
-        if let Some(bad) = names.iter().find(|&&n| n != "all" && registry::find(n).is_none()) {
-            return Err(format!("--cycles takes all or a comma list of {}, not {bad:?}", registry::names()));
+        if let Some(bad) = names.iter().find(|&&n| n != "all" && n != OPERATOR && registry::find(n).is_none()) {
+            return Err(format!("--cycles takes all or a comma list of {}, {OPERATOR}, not {bad:?}", registry::names()));
         }
         Ok(FAMILIES.iter().filter(|f| names.contains(&"all") || names.contains(&f.name)).collect())
+    }
+
+    /// Whether `--cycles` asks for the operator generator: `all`, or `operator` named.
+    pub fn parse_operator(list: &str) -> bool {
+        list.split(',').map(str::trim).any(|n| n == "all" || n == OPERATOR)
+    }
+
+    /// The names `--cycles` would take for this run: the families, then `operator`.
+    pub fn cycle_names(&self) -> Vec<&'static str> {
+        self.cycles.iter().map(|f| f.name).chain(self.operator.then_some(OPERATOR)).collect()
     }
 
     /// Whether a case that runs `run` is in the run: with every family covered, any case is.

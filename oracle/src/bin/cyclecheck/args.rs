@@ -203,15 +203,15 @@ pub struct CorpusArgs {
 }
 
 fn cycles_help() -> String {
-    format!("all, or a comma list of: {} (the corpus and the generated campaign restricted to cases that run them)", registry::names())
+    format!("all, or a comma list of: {}, operator (the corpus and the generated campaign restricted to cases that run them; operator: thread cases with operator scripts, on the thread families listed)", registry::names())
 }
 
-/// The families of `--cycles`.
+/// The families of `--cycles`, and whether it asks for the operator generator.
 #[derive(Clone, Debug)]
-pub struct Cycles(pub Vec<&'static registry::Family>);
+pub struct Cycles(pub Vec<&'static registry::Family>, pub bool);
 
 fn cycles(list: &str) -> Result<Cycles, String> {
-    certify::Options::parse_cycles(list).map(Cycles)
+    certify::Options::parse_cycles(list).map(|f| Cycles(f, certify::Options::parse_operator(list)))
 }
 
 #[derive(Args, Debug)]

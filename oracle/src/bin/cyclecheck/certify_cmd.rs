@@ -26,6 +26,7 @@ pub fn run(a: &CertifyArgs) -> Result<u8, Bad> {
         candidate: a.candidate.candidate.clone(),
         limits: a.candidate.limits(),
         cycles: a.cycles.0.clone(),
+        operator: a.cycles.1,
         cases: a.cases,
         seed: a.seed,
         max_failures: a.max_failures,

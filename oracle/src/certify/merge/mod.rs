@@ -107,6 +107,7 @@ fn options(doc: &Value, kani_log: Option<kani::KaniLog>) -> Result<Options, Stri
         candidate: argv.map(|a| a.join(" ")),
         limits,
         cycles: Options::parse_cycles(&names.join(","))?,
+        operator: Options::parse_operator(&names.join(",")),
         cases: p["cases_per_family"].as_u64().and_then(|n| u32::try_from(n).ok()).ok_or("no parameters.cases_per_family")?,
         seed: p["seed"].as_u64().ok_or("no parameters.seed")?,
         max_failures: c["max_failures"].as_u64().map_or(defaults.max_failures, |n| n as u32),
