@@ -75,6 +75,8 @@ mod modal;
 mod multipass;
 pub mod number;
 mod operator;
+/// The feed-hold retract as a pure function (G92.HOLD, G76.HOLD), for the proofs.
+pub use operator::geometry as hold_geometry;
 /// Public (hidden) only so that the proof harnesses (`cycle-proofs`) can check the G92 pull-out
 /// amounts and geometry below the lexer; not part of the API.
 #[doc(hidden)]

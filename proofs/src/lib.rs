@@ -27,6 +27,7 @@ pub mod g162_pitch;
 pub mod g90_envelope;
 pub mod peck_counts;
 pub mod g92_pullout_geometry;
+pub mod hold_retract;
 #[cfg(not(kani))]
 pub mod schedule_spec;
 

@@ -4,6 +4,7 @@
 //! of each event (OP.SINGLE, G92.SINGLE, G76.SINGLE, G162.NOSTOP).
 
 use super::along::Frac;
+use super::geometry::retract_targets;
 use super::source::{CutInfo, Kind, Look, Role};
 use super::{After, Layer, Phase};
 use crate::Core;
@@ -26,14 +27,6 @@ fn hold_rule(kind: &Kind) -> Rule {
     }
 }
 
-/// `p + d`, saturating (positions are below 2^62: never reached).
-fn add(p: (i64, i64), d: (i64, i64)) -> (i64, i64) {
-    (p.0.saturating_add(d.0), p.1.saturating_add(d.1))
-}
-
-fn sub(a: (i64, i64), b: (i64, i64)) -> (i64, i64) {
-    (a.0.saturating_sub(b.0), a.1.saturating_sub(b.1))
-}
 
 impl Layer {
     fn press(&mut self, button: Button, p: (i64, i64), rule: Rule) {
@@ -98,13 +91,12 @@ impl Layer {
     fn retract(&mut self, core: &mut Core<'_>, m: &Move, p: (i64, i64), c: &CutInfo, rule: Rule) {
         self.press(Button::Hold, p, rule);
         self.cut_to(m, p);
-        if let Some((s, e)) = c.pull {
-            let to = if c.role == Role::Pullout { e } else { add(p, sub(e, s)) };
+        let (manner, short, a) = retract_targets(p, c.role == Role::Pullout, c.pull, c.a, c.z_long);
+        if let Some(to) = manner {
             self.move_to(Move::thread(to.0, to.1, m.feed, m.angle, rule));
         }
-        let short = if c.z_long { (c.a.0, self.at.1) } else { (self.at.0, c.a.1) };
         self.move_to(Move::rapid(short.0, short.1, rule));
-        self.move_to(Move::rapid(c.a.0, c.a.1, rule));
+        self.move_to(Move::rapid(a.0, a.1, rule));
         self.stop(StopReason::FeedHold, rule);
         // The rest of the cut is read now, for the repeat.
         self.src.drain(core);

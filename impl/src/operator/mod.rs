@@ -16,6 +16,7 @@
 //! takes a bounded number of steps.
 
 mod along;
+pub mod geometry;
 mod hold;
 pub(crate) mod source;
 
