@@ -198,9 +198,8 @@ impl Schedule {
         } else {
             // s ≤ reach: (s − 1)·Δd² ≤ T·(T − 1) < 2^126; the depth of pass s − 1 is below T,
             // and Δdmin ≥ 1 because a switch exists.
-            let s = u128::from(self.switch);
-            let before = sqrt_round((s - 1) * self.dd2);
-            (s - 1) + (u128::from(self.target) - before).div_ceil(u128::from(self.dmin.max(1)))
+            let before = switch_depth(self.switch - 1, self.dd2);
+            u128::from(self.switch - 1) + min_cuts(u128::from(self.target) - before, self.dmin)
         };
         u32::try_from(count).ok().filter(|&c| c <= limit)
     }
@@ -218,6 +217,20 @@ fn constant_depth(n: u32, dd: u64) -> u128 {
 #[inline]
 fn root_depth(n: u32, dd2: u128, before: u64) -> u64 {
     root(u128::from(n) * dd2, before)
+}
+
+/// G76.DEPTH.MIN: the depth round(√((s − 1)·Δd²)) of the pass before the switch pass s, given
+/// s − 1 (a function of its own, so that a proof can replace it by its specification).
+#[inline]
+fn switch_depth(before_switch: u64, dd2: u128) -> u128 {
+    sqrt_round(u128::from(before_switch) * dd2)
+}
+
+/// G76.DEPTH.MIN: the number ⌈rest / Δdmin⌉ of minimum cuts that cover `rest` (Δdmin read as
+/// ≥ 1; a function of its own, so that a proof can replace the quotient by its specification).
+#[inline]
+fn min_cuts(rest: u128, dmin: u64) -> u128 {
+    rest.div_ceil(u128::from(dmin.max(1)))
 }
 
 /// G76.DEPTH.MIN: the switch pass s, the first n ≥ 1 with (√n − √(n−1))·Δd < Δdmin, decided in

@@ -19,6 +19,8 @@ pub mod depth_step_monotone;
 pub mod depth_step_clamp;
 pub mod depth_step;
 pub mod schedule_step;
+pub mod schedule_count;
+pub mod schedule_new_shape;
 pub mod g71_layers;
 pub mod fixed_point;
 pub mod mutation;
