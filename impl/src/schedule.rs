@@ -71,10 +71,25 @@ pub struct Schedule {
 }
 
 /// A switch pass that no pass number reaches.
-const NEVER: u64 = u64::MAX;
+#[doc(hidden)]
+pub const NEVER: u64 = u64::MAX;
 
 /// Above every pass number (n < 2^32): a `reach` capped here is a count no limit allows.
-const REACH_CAP: u64 = 1 << 33;
+#[doc(hidden)]
+pub const REACH_CAP: u64 = 1 << 33;
+
+/// The parts of a prepared [`Schedule`], for the proofs (`cycle-proofs`) that take a symbolic
+/// schedule: not part of the API. Δd² is not a part: [`Schedule::from_parts`] forms it.
+#[doc(hidden)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Parts {
+    pub dd: u64,
+    pub dmin: u64,
+    pub target: u64,
+    pub reach: u64,
+    pub switch: u64,
+    pub constant: bool,
+}
 
 impl Schedule {
     /// Prepares the schedule of `p`; values outside their domain are read as the nearest
@@ -93,6 +108,32 @@ impl Schedule {
         };
         let reach = u64::try_from(reach).unwrap_or(REACH_CAP).min(REACH_CAP);
         Schedule { dd, dd2, dmin, target, reach, switch, constant: p.constant }
+    }
+
+    /// The parts of this schedule (for the proofs; not part of the API).
+    #[doc(hidden)]
+    pub fn parts(&self) -> Parts {
+        let Schedule { dd, dmin, target, reach, switch, constant, .. } = *self;
+        Parts { dd, dmin, target, reach, switch, constant }
+    }
+
+    /// The schedule with these parts when they have the shape [`Schedule::new`] gives them
+    /// (Δd, T in 1…2^63 − 1, Δdmin < 2^63, reach in 1…[`REACH_CAP`], the switch pass ≥ 1 and
+    /// [`NEVER`] without a minimum or in constant mode), else `None`. That reach and the switch
+    /// pass are *the* passes of G76.DEPTH.LAST and G76.DEPTH.MIN is not checked: a proof that
+    /// takes a symbolic schedule assumes it (for the proofs; not part of the API).
+    #[doc(hidden)]
+    pub fn from_parts(p: Parts) -> Option<Schedule> {
+        let top = i64::MAX.unsigned_abs();
+        let shaped = (1..=top).contains(&p.dd)
+            && (1..=top).contains(&p.target)
+            && p.dmin <= top
+            && (1..=REACH_CAP).contains(&p.reach)
+            && p.switch >= 1
+            && (p.switch == NEVER || (p.dmin >= 1 && !p.constant));
+        let dd2 = u128::from(p.dd) * u128::from(p.dd);
+        let Parts { dd, dmin, target, reach, switch, constant } = p;
+        shaped.then_some(Schedule { dd, dd2, dmin, target, reach, switch, constant })
     }
 
     /// The first rough pass (G76.DEPTH.1; G76.DEPTH.MIN when Δd < Δdmin; G78.DEPTHMODE).
@@ -129,10 +170,10 @@ impl Schedule {
         }
         if self.constant {
             // G78.DEPTHMODE 0; n < reach: n·Δd < T.
-            return self.clamp(n, u128::from(n) * u128::from(self.dd), Rule::G78DepthMode);
+            return self.clamp(n, constant_depth(n, self.dd), Rule::G78DepthMode);
         }
         // G76.DEPTH.1; n < reach: n·Δd² ≤ T·(T − 1) < 2^126.
-        self.clamp(n, u128::from(root(u128::from(n) * self.dd2, before)), Rule::G76Depth1)
+        self.clamp(n, u128::from(root_depth(n, self.dd2, before)), Rule::G76Depth1)
     }
 
     /// Clamps a rounded depth to the target (G76.DEPTH.LAST) and builds the pass.
@@ -157,12 +198,39 @@ impl Schedule {
         } else {
             // s ≤ reach: (s − 1)·Δd² ≤ T·(T − 1) < 2^126; the depth of pass s − 1 is below T,
             // and Δdmin ≥ 1 because a switch exists.
-            let s = u128::from(self.switch);
-            let before = sqrt_round((s - 1) * self.dd2);
-            (s - 1) + (u128::from(self.target) - before).div_ceil(u128::from(self.dmin.max(1)))
+            let before = switch_depth(self.switch - 1, self.dd2);
+            u128::from(self.switch - 1) + min_cuts(u128::from(self.target) - before, self.dmin)
         };
         u32::try_from(count).ok().filter(|&c| c <= limit)
     }
+}
+
+/// G78.DEPTHMODE 0: the depth n·Δd of pass n (a function of its own, so that a proof can
+/// replace the product by its specification).
+#[inline]
+fn constant_depth(n: u32, dd: u64) -> u128 {
+    u128::from(n) * u128::from(dd)
+}
+
+/// G76.DEPTH.1: the depth round(√(n·Δd²)) of pass n, `before` the guess (a function of its
+/// own, so that a proof can replace the product and the root by their specification).
+#[inline]
+fn root_depth(n: u32, dd2: u128, before: u64) -> u64 {
+    root(u128::from(n) * dd2, before)
+}
+
+/// G76.DEPTH.MIN: the depth round(√((s − 1)·Δd²)) of the pass before the switch pass s, given
+/// s − 1 (a function of its own, so that a proof can replace it by its specification).
+#[inline]
+fn switch_depth(before_switch: u64, dd2: u128) -> u128 {
+    sqrt_round(u128::from(before_switch) * dd2)
+}
+
+/// G76.DEPTH.MIN: the number ⌈rest / Δdmin⌉ of minimum cuts that cover `rest` (Δdmin read as
+/// ≥ 1; a function of its own, so that a proof can replace the quotient by its specification).
+#[inline]
+fn min_cuts(rest: u128, dmin: u64) -> u128 {
+    rest.div_ceil(u128::from(dmin.max(1)))
 }
 
 /// G76.DEPTH.MIN: the switch pass s, the first n ≥ 1 with (√n − √(n−1))·Δd < Δdmin, decided in

@@ -6,7 +6,9 @@
 //! **Not a Kani proof.** Kani 0.61.0 / CBMC 6.4.0 with both stubs reached no verdict: CaDiCaL
 //! 350 s, Kissat 4.0.1 450 s (proofs/README.md, "TESTs"); `Schedule::new`'s 128-bit reach
 //! quotient stays in every path. The stubs are kept for the next attempt (the wrapper that
-//! was run is at the end of this file); under `cargo test` the real functions run.
+//! was run is at the end of this file); under `cargo test` the real functions run. Its
+//! properties are Kani-proved on a symbolic schedule instead (`schedule_step`, `schedule_count`:
+//! `from_parts` in place of `new`, the depths stubbed as the z3 lemmas constrain them).
 //!
 //! **Property.** For all legal Δd (1…N), Δdmin (0…N), T = k − d (1…N), N = 999 999 999,
 //! degressive or constant, and every pass `prev` the schedule can be asked about (any pass

@@ -12,11 +12,15 @@ pub mod program;
 pub mod source;
 pub mod model;
 pub mod schedule;
+pub mod schedule_parts;
 
 pub mod depth_bounds;
 pub mod depth_step_monotone;
 pub mod depth_step_clamp;
 pub mod depth_step;
+pub mod schedule_step;
+pub mod schedule_count;
+pub mod schedule_new_shape;
 pub mod g71_layers;
 pub mod fixed_point;
 pub mod mutation;

@@ -179,6 +179,24 @@ pub const PROPERTIES: &[Property] = &[
         checked_by: CheckedBy::Kani,
     },
     Property {
+        harness: "schedule_step",
+        rules: &["G76.DEPTH.1", "G76.DEPTH.MIN", "G76.DEPTH.LAST", "G78.DEPTHMODE"],
+        statement: "The induction step of the production depth schedule on a symbolic schedule (from_parts; root_depth and constant_depth stubbed by two depths whose assumptions are z3 lemmas 01-05, 07, 09, 11, checked by the drivers): the next pass of an admissible pass is pass n + 1, depth in 1…k − d, last exactly at k − d and named G76.DEPTH.LAST, never shallower, strictly deeper with Δdmin ≥ 1, in constant mode and at the last, every cut but the last ≥ Δdmin (exactly Δdmin from the switch pass, Δd in constant mode), admissible again; pass 1 is min(Δd, k − d).",
+        checked_by: CheckedBy::Kani,
+    },
+    Property {
+        harness: "schedule_count",
+        rules: &["G76.DEPTH.LAST", "G76.DEPTH.MIN", "G78.DEPTHMODE", "PRJ.MAXPASS"],
+        statement: "The closed-form pass count agrees with stepping on a symbolic schedule (the count's root and quotient stubbed by b and Q whose assumptions are z3 lemmas 05, 08, 11, checked by the drivers): the pass after an exact pass is last exactly when it is numbered by the count, earlier passes are numbered below it, and a limit gives the count or none.",
+        checked_by: CheckedBy::Kani,
+    },
+    Property {
+        harness: "schedule_new_shape",
+        rules: &["G76.DEPTH.LAST", "G76.DEPTH.MIN", "G78.DEPTHMODE"],
+        statement: "Schedule::new of legal words (its reach quotient real, switch_pass stubbed: NEVER without a minimum, else ≥ 1, lemma 07) has the shape from_parts accepts (reach in 1…2^33, switch ≥ 1, NEVER without a minimum or in constant mode) and from_parts rebuilds it exactly.",
+        checked_by: CheckedBy::Kani,
+    },
+    Property {
         harness: "depth_step",
         rules: &["G76.DEPTH.1", "G76.DEPTH.MIN", "G76.DEPTH.LAST", "G78.DEPTHMODE"],
         statement: "One step of the production depth schedule (first, or next of any pass) over the full legal ranges, with root and switch_pass stubbed by their specifications (z3 lemmas 01, 02, 07; impl's unit tests): numbered n + 1, depth in 1…k − d, last exactly at k − d and named G76.DEPTH.LAST, a minimum cut adds exactly Δdmin, a constant step adds Δd (depth n·Δd), a G76.DEPTH.1 depth is the root of n·Δd², nothing after the last or past pass 2^32 − 1.",
@@ -369,7 +387,9 @@ Complete - 1 successfully verified harnesses, 1 failures, 2 total.
                 assert!(r.chars().all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '.'), "{}: rule {r}", p.harness);
             }
         }
-        assert_eq!(property("g90_envelope").map(|p| p.checked_by), Some(CheckedBy::Kani));
+        for name in ["g90_envelope", "g92_pullout_geometry", "schedule_step", "schedule_count", "schedule_new_shape"] {
+            assert_eq!(property(name).map(|p| p.checked_by), Some(CheckedBy::Kani), "{name}");
+        }
         assert!(property("nope").is_none());
     }
 }
