@@ -179,6 +179,12 @@ pub const PROPERTIES: &[Property] = &[
         checked_by: CheckedBy::Kani,
     },
     Property {
+        harness: "hold_retract",
+        rules: &["G92.HOLD", "G76.HOLD"],
+        statement: "The feed-hold retract of a thread cut (No.0018 bit 6 = 0) over ±2^40, from any point of the held move: a move in the pull-out manner exactly when the cut has a pull-out, by the programmed pull-out's displacement (or on to its end from the pull-out), the way the pull-out goes on the short axis, never past the thread's end on the long axis; then a rapid on the short axis only to A's coordinate, then A.",
+        checked_by: CheckedBy::Kani,
+    },
+    Property {
         harness: "schedule_step",
         rules: &["G76.DEPTH.1", "G76.DEPTH.MIN", "G76.DEPTH.LAST", "G78.DEPTHMODE"],
         statement: "The induction step of the production depth schedule on a symbolic schedule (from_parts; root_depth and constant_depth stubbed by two depths whose assumptions are z3 lemmas 01-05, 07, 09, 11, checked by the drivers): the next pass of an admissible pass is pass n + 1, depth in 1…k − d, last exactly at k − d and named G76.DEPTH.LAST, never shallower, strictly deeper with Δdmin ≥ 1, in constant mode and at the last, every cut but the last ≥ Δdmin (exactly Δdmin from the switch pass, Δd in constant mode), admissible again; pass 1 is min(Δd, k − d).",
@@ -387,7 +393,7 @@ Complete - 1 successfully verified harnesses, 1 failures, 2 total.
                 assert!(r.chars().all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '.'), "{}: rule {r}", p.harness);
             }
         }
-        for name in ["g90_envelope", "g92_pullout_geometry", "schedule_step", "schedule_count", "schedule_new_shape"] {
+        for name in ["g90_envelope", "g92_pullout_geometry", "hold_retract", "schedule_step", "schedule_count", "schedule_new_shape"] {
             assert_eq!(property(name).map(|p| p.checked_by), Some(CheckedBy::Kani), "{name}");
         }
         assert!(property("nope").is_none());
