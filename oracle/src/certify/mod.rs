@@ -436,7 +436,10 @@ mod tests {
         assert_eq!(names("g162,g32"), ["g162", "g32"]);
         assert_eq!(Options::parse_cycles("all").unwrap().len(), FAMILIES.len());
         let e = Options::parse_cycles("g92,g93").unwrap_err();
-        assert_eq!(e, format!("--cycles takes all or a comma list of {}, not \"g93\"", registry::names()));
+        assert_eq!(e, format!("--cycles takes all or a comma list of {}, operator, not \"g93\"", registry::names()));
+        // `operator`: the operator generator, named or with all; no family of its own.
+        assert_eq!(names("g92,operator"), ["g92"]);
+        assert!(Options::parse_operator("g92, operator") && Options::parse_operator("all") && !Options::parse_operator("g92"));
         let o = Options { cycles: Options::parse_cycles("g92").unwrap(), ..Options::default() };
         let g92 = CycleRun::Family(registry::find("g92").unwrap());
         let g78 = CycleRun::Family(registry::find("g78").unwrap());
