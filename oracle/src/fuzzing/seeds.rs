@@ -14,11 +14,11 @@ use super::input::Generator;
 use crate::gen::{self, KNOBS};
 use crate::registry::FAMILIES;
 
-/// The generators seeded: every registry family's, then word soup and corpus mutants. A seed is
-/// named after its generator ([`Generator::name`]).
+/// The generators seeded: every registry family's, then word soup, corpus mutants and thread
+/// cases with operator scripts. A seed is named after its generator ([`Generator::name`]).
 fn generators() -> Vec<Generator> {
     let families = FAMILIES.iter().map(Generator::Family);
-    families.chain([Generator::Soup, Generator::Mutant]).collect()
+    families.chain([Generator::Soup, Generator::Mutant, Generator::Operator]).collect()
 }
 
 fn origin(target: Target, what: String) -> Origin {
@@ -131,7 +131,7 @@ mod tests {
             .collect();
         // Every registered family, the corpus's literal programs, the garbage generator's kinds.
         let mut expected: std::collections::BTreeSet<&str> = crate::registry::FAMILIES.iter().map(|f| f.name).collect();
-        expected.extend(["literal", "mutant", "soup"]);
+        expected.extend(["literal", "mutant", "operator", "soup"]);
         assert_eq!(families, expected);
     }
 

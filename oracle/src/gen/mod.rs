@@ -50,8 +50,9 @@ use std::fmt;
 /// A generated case: program text and configuration.
 #[derive(Clone, PartialEq, Eq)]
 pub struct Case {
-    /// The generator: a registry family's name (`g92`, `g76`, …, `g71`, `g72`, `g70`) or a
-    /// garbage generator's (`bytes`, `soup`, `mutant`).
+    /// The generator: a registry family's name (`g92`, `g76`, …, `g71`, `g72`, `g70`), a
+    /// garbage generator's (`bytes`, `soup`, `mutant`) or `operator` (a thread case with an
+    /// operator script).
     pub family: &'static str,
     pub program: Vec<u8>,
     pub config: Config,

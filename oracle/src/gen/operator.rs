@@ -38,8 +38,10 @@ pub fn build(dice: &mut Dice) -> Case {
     scripted(case, dice)
 }
 
-/// `case` with a script placed on its uninterrupted trace, and No.0018 bit 6 drawn.
+/// `case` with a script placed on its uninterrupted trace, and No.0018 bit 6 drawn; its
+/// generator is then `operator`.
 pub fn scripted(mut case: Case, dice: &mut Dice) -> Case {
+    case.family = "operator";
     case.config.params.no18_bit6_hold = Some(dice.below(2) as i64);
     let u = cycle_spec::expand(&case.program, &case.config);
     case.config.operator = place(&u.events, case.config.start_x, case.config.start_z, dice);
