@@ -358,11 +358,19 @@ pub fn run_engine(
     let (mut tally, mut corpus, mut failures, mut groups) = (tally::Tally::default(), Vec::new(), Vec::new(), Vec::new());
     let (mut consecutive, mut stopped) = (0u32, None);
     let write_error = |e: std::io::Error| Error(format!("cannot write cases.jsonl: {e}"));
-    while let Some(p) = cases.next() {
+    // The engine is told the next cases ahead, so a candidate child computes while this judges.
+    let mut ahead = std::collections::VecDeque::new();
+    loop {
+        while ahead.len() <= crate::candidate::WINDOW {
+            let Some(p) = cases.next() else { break };
+            engine.prefetch(&p.program, &p.config);
+            ahead.push_back(p);
+        }
+        let Some(p) = ahead.pop_front() else { break };
         let in_corpus = matches!(p.origin, Origin::Corpus { .. });
         if tally.cases % 8 == 0 {
             let phase = if in_corpus { "corpus" } else { "generated" };
-            progress(Progress { phase, done: cases.drawn - 1, total: cases.total, bad: tally.cases - tally.conform });
+            progress(Progress { phase, done: cases.drawn - ahead.len() - 1, total: cases.total, bad: tally.cases - tally.conform });
         }
         let judged = if in_corpus { judge_keeping(&SpecEngine, engine, &p.program, &p.config) } else { judge(&SpecEngine, engine, &p.program, &p.config) };
         let record = CaseRecord::new(&p, judged);
