@@ -12,7 +12,7 @@
 use crate::candidate::{CandidateEngine, Limits};
 use crate::certify::{self, cases::Cases};
 use crate::engine::{Engine, ImplEngine, SpecEngine};
-use crate::fuzzing::{decoded, seeds::encode, Target};
+use crate::fuzzing::{decoded, seeds::encode, CycleInput, Target};
 use crate::judge::judge;
 use std::collections::VecDeque;
 use std::path::{Path, PathBuf};
@@ -79,6 +79,10 @@ pub struct FuzzRate {
     pub time: Duration,
     /// `address` when AddressSanitizer's runtime is linked in, else `none`.
     pub sanitizer: &'static str,
+    /// The target's body in this process (uninstrumented) on the run's corpus — the seeds and
+    /// the inputs libFuzzer kept — and of that, decoding the inputs into cases alone.
+    pub body: Rate,
+    pub decoding: Rate,
 }
 
 impl FuzzRate {
@@ -91,18 +95,18 @@ impl FuzzRate {
 /// and the campaign's `-max_len`) from the decoded seeds in `seeds` (`fuzz/seeds/diff_spec_impl`,
 /// encoded here into a scratch folder), new inputs going to another scratch folder; both are
 /// removed afterwards.
-pub fn fuzz(binary: &Path, seeds: Option<&Path>, dict: Option<&Path>, runs: u64) -> Result<FuzzRate, String> {
+pub fn fuzz(binary: &Path, seeds: Option<&Path>, dict: Option<&Path>, runs: u64, extra: &[String]) -> Result<FuzzRate, String> {
     let bytes = std::fs::read(binary).map_err(|e| format!("{}: {e}", binary.display()))?;
     let sanitizer = if bytes.windows(11).any(|w| w == b"__asan_init") { "address" } else { "none" };
     drop(bytes);
     let scratch = std::env::temp_dir().join(format!("cyclecheck-bench-fuzz-{}", std::process::id()));
-    let result = fuzz_in(binary, seeds, dict, runs, &scratch);
+    let result = fuzz_in(binary, seeds, dict, runs, extra, &scratch);
     let _ = std::fs::remove_dir_all(&scratch);
-    let (executions, time) = result?;
-    Ok(FuzzRate { binary: binary.to_path_buf(), executions, time, sanitizer })
+    let (executions, time, body, decoding) = result?;
+    Ok(FuzzRate { binary: binary.to_path_buf(), executions, time, sanitizer, body, decoding })
 }
 
-fn fuzz_in(binary: &Path, seeds: Option<&Path>, dict: Option<&Path>, runs: u64, scratch: &Path) -> Result<(u64, Duration), String> {
+fn fuzz_in(binary: &Path, seeds: Option<&Path>, dict: Option<&Path>, runs: u64, extra: &[String], scratch: &Path) -> Result<(u64, Duration, Rate, Rate), String> {
     let (new, encoded) = (scratch.join("new"), scratch.join("seeds"));
     for d in [&new, &encoded] {
         std::fs::create_dir_all(d).map_err(|e| format!("{}: {e}", d.display()))?;
@@ -113,7 +117,7 @@ fn fuzz_in(binary: &Path, seeds: Option<&Path>, dict: Option<&Path>, runs: u64, 
     }
     let mut c = std::process::Command::new(binary);
     c.args([&new, &encoded]).args([format!("-runs={runs}"), "-seed=1".into(), "-max_len=2048".into(), "-print_final_stats=1".into()]);
-    c.args(dict.map(|d| format!("-dict={}", d.display())));
+    c.args(dict.map(|d| format!("-dict={}", d.display()))).args(extra);
     let started = Instant::now();
     let out = c.output().map_err(|e| format!("{}: {e}", binary.display()))?;
     let time = started.elapsed();
@@ -127,7 +131,33 @@ fn fuzz_in(binary: &Path, seeds: Option<&Path>, dict: Option<&Path>, runs: u64, 
         .find_map(|l| l.strip_prefix("stat::number_of_executed_units:"))
         .and_then(|n| n.trim().parse().ok())
         .ok_or_else(|| format!("{}: no stat::number_of_executed_units in its log", binary.display()))?;
-    Ok((executions, time))
+    let mut inputs = decoded::read_dir(&new)?;
+    inputs.extend(decoded::read_dir(&encoded)?);
+    let body = best_of(3, || {
+        let bad = inputs.iter().filter(|(_, data)| Target::DiffSpecImpl.run(data).is_err()).count();
+        bad as u64
+    }, inputs.len());
+    let decoding = best_of(
+        3,
+        || {
+            inputs.iter().for_each(|(_, data)| drop(std::hint::black_box(CycleInput::from_bytes(data).case())));
+            0
+        },
+        inputs.len(),
+    );
+    Ok((executions, time, body, decoding))
+}
+
+/// The fastest of `rounds` runs of `f` over `n` inputs (`f` returns the failures).
+fn best_of(rounds: u32, mut f: impl FnMut() -> u64, n: usize) -> Rate {
+    let mut best: Option<Rate> = None;
+    for _ in 0..rounds {
+        let started = Instant::now();
+        let bad = f();
+        let r = Rate { cases: n as u64, bad, time: started.elapsed() };
+        best = Some(best.map_or(r, |b| b.best(r)));
+    }
+    best.expect("a round")
 }
 
 /// What to measure.
@@ -141,6 +171,8 @@ pub struct Options {
     pub fuzz_seeds: Option<PathBuf>,
     pub fuzz_dict: Option<PathBuf>,
     pub fuzz_runs: u64,
+    /// More libFuzzer flags.
+    pub fuzz_args: Vec<String>,
 }
 
 /// The measurements of one run.
@@ -178,7 +210,7 @@ pub fn run(o: &Options) -> Result<Report, String> {
             *b = Some(b.map_or(r, |b| b.best(r)));
         }
     }
-    let fuzz = o.fuzz_binary.as_ref().map(|b| fuzz(b, o.fuzz_seeds.as_deref(), o.fuzz_dict.as_deref(), o.fuzz_runs));
+    let fuzz = o.fuzz_binary.as_ref().map(|b| fuzz(b, o.fuzz_seeds.as_deref(), o.fuzz_dict.as_deref(), o.fuzz_runs, &o.fuzz_args));
     let [drawing, in_process, serve_rate, serve_lockstep] = best.map(|b| b.expect("one round"));
     let serve_pipelined = serve.speaks().pipeline;
     Ok(Report { drawing, in_process, serve: serve_rate, serve_pipelined, serve_lockstep, fuzz, load: (load_before, loadavg()) })
@@ -202,6 +234,10 @@ impl Report {
             )),
             Some(Err(e)) => s.push_str(&format!("| `diff_spec_impl` under libFuzzer | - | - | failed: {} |\n", e.lines().next().unwrap_or(""))),
             None => s.push_str("| `diff_spec_impl` under libFuzzer | - | - | no fuzz binary (--fuzz-binary) |\n"),
+        }
+        if let Some(Ok(f)) = &self.fuzz {
+            s.push_str(&row("(`diff_spec_impl`'s body in-process, uninstrumented, on that run's corpus)", f.body.per_second(), cases(&f.body)));
+            s.push_str(&row("(of which decoding the inputs into cases)", f.decoding.per_second(), cases(&f.decoding)));
         }
         s.push_str(&row("(`cyclecheck serve`, no case told ahead: a round trip per case)", self.serve_lockstep.per_second(), cases(&self.serve_lockstep)));
         s.push_str(&row("(drawing the cases alone)", self.drawing.per_second(), cases(&self.drawing)));

@@ -337,4 +337,7 @@ pub struct BenchArgs {
     /// Executions of the fuzz binary (libFuzzer's -runs), starting from the seeds of fuzz/seeds/diff_spec_impl.
     #[arg(long, value_name = "N", default_value_t = 30_000)]
     pub fuzz_runs: u64,
+    /// A further libFuzzer flag for the fuzz binary (repeatable), e.g. --fuzz-arg=-entropic=0.
+    #[arg(long, value_name = "FLAG", allow_hyphen_values = true)]
+    pub fuzz_arg: Vec<String>,
 }

@@ -105,6 +105,7 @@ fn bench_harness(a: &args::BenchArgs) -> Result<u8, Bad> {
         fuzz_seeds: existing("fuzz/seeds/diff_spec_impl"),
         fuzz_dict: existing("fuzz/gcode.dict"),
         fuzz_runs: a.fuzz_runs,
+        fuzz_args: a.fuzz_arg.clone(),
     };
     let report = bench::run(&o).map_err(Bad)?;
     print!("{}", report.table());
