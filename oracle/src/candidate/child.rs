@@ -2,6 +2,7 @@
 //! read from its stdout (each capped), the tail of its stderr kept — and its process group.
 
 use super::Limits;
+use cycle_vocab::text::Trace;
 use crate::engine::{Failure, FailureKind};
 use std::io::{BufRead, BufReader, Read, Write};
 use std::os::unix::process::CommandExt as _;
@@ -13,10 +14,14 @@ use std::time::{Duration, Instant};
 /// How much of the child's stderr is kept for reports (the last bytes).
 const STDERR_TAIL: usize = 4096;
 
+/// An answer line and its usual reading, if any: id and trace.
+pub(super) type Answer = (Vec<u8>, Option<(u64, Trace)>);
+
 /// What the stdout thread saw.
 pub(super) enum Line {
-    /// One answer line, without its newline.
-    Text(Vec<u8>),
+    /// One answer line, without its newline, and — read here, off the campaign's thread — its
+    /// id and trace when it is the usual answer ([`super::usual_answer`]).
+    Text(Vec<u8>, Option<(u64, Trace)>),
     /// A line longer than the cap (the thread stops reading).
     TooLong(usize),
     /// End of output (the child exited or closed stdout), or a read error.
@@ -59,7 +64,8 @@ fn read_lines(stdout: ChildStdout, cap: usize, lines: Sender<Line>) {
         while matches!(line.last(), Some(b'\n' | b'\r')) {
             line.pop();
         }
-        if lines.send(Line::Text(line)).is_err() {
+        let usual = super::usual_answer(&line);
+        if lines.send(Line::Text(line, usual)).is_err() {
             return;
         }
     }
@@ -91,8 +97,10 @@ impl Running {
         };
         let (requests, to_write) = mpsc::channel::<Vec<u8>>();
         std::thread::spawn(move || {
-            for line in to_write {
-                if stdin.write_all(&line).and_then(|()| stdin.flush()).is_err() {
+            // Requests queued meanwhile go out in the same write.
+            while let Ok(mut lines) = to_write.recv() {
+                lines.extend(to_write.try_iter().flatten());
+                if stdin.write_all(&lines).and_then(|()| stdin.flush()).is_err() {
                     return;
                 }
             }
@@ -134,10 +142,11 @@ impl Running {
         }
     }
 
-    /// The next answer line, by `deadline`: or the failure its absence amounts to.
-    pub(super) fn answer(&mut self, deadline: Instant, limits: Limits, timeout: Duration) -> Result<Vec<u8>, Failure> {
+    /// The next answer line, by `deadline` (with its usual reading, if any): or the failure its
+    /// absence amounts to.
+    pub(super) fn answer(&mut self, deadline: Instant, limits: Limits, timeout: Duration) -> Result<Answer, Failure> {
         match self.lines.recv_timeout(deadline.saturating_duration_since(Instant::now())) {
-            Ok(Line::Text(answer)) => Ok(answer),
+            Ok(Line::Text(answer, usual)) => Ok((answer, usual)),
             Ok(Line::TooLong(n)) => Err(Failure {
                 kind: FailureKind::OutputTooLarge,
                 message: format!("answer line over {} bytes (read {n})", limits.max_output),

@@ -97,7 +97,7 @@ impl CandidateEngine {
         if s.greet {
             running.send(hello().into_bytes());
             let answer = running.answer(Instant::now() + self.limits.timeout, self.limits, self.limits.timeout);
-            match answer.and_then(|line| parse_hello(&line)) {
+            match answer.and_then(|(line, _)| parse_hello(&line)) {
                 Ok(speaks) => s.speaks = speaks,
                 Err(f) => {
                     s.greet = false;
@@ -176,7 +176,10 @@ impl CandidateEngine {
         let (id, sent) = s.queue[0].sent.expect("the first request is sent by fill");
         let running = s.running.as_mut().expect("started above");
         let deadline = sent.max(s.last_answer) + self.limits.timeout;
-        let result = running.answer(deadline, self.limits, self.limits.timeout).and_then(|line| parse_response(id, &line));
+        let result = running.answer(deadline, self.limits, self.limits.timeout).and_then(|(line, usual)| match usual {
+            Some((got, trace)) if got == id => Ok(trace),
+            _ => parse_response(id, &line),
+        });
         s.last_answer = Instant::now();
         let others_in_flight = s.queue.iter().skip(1).any(|q| q.sent.is_some());
         match &result {

@@ -210,17 +210,9 @@ pub fn parse_hello(line: &[u8]) -> Result<Speaks, Failure> {
 
 /// Reads the answer line to request `id`: the trace, or the failure it amounts to.
 pub fn parse_response(id: u64, line: &[u8]) -> Result<Trace, Failure> {
-    /// The usual answer, read straight into a trace; anything else takes the long way, which
-    /// says what is wrong.
-    #[derive(Deserialize)]
-    #[serde(deny_unknown_fields)]
-    struct Answer {
-        id: u64,
-        trace: Trace,
-    }
-    if let Ok(a) = serde_json::from_slice::<Answer>(line) {
-        if a.id == id {
-            return Ok(a.trace);
+    if let Some((got, trace)) = usual_answer(line) {
+        if got == id {
+            return Ok(trace);
         }
     }
     let garbage = |why: String| Failure { kind: FailureKind::Garbage, message: format!("{why}; answer: {}", snippet(line)) };
@@ -243,6 +235,18 @@ pub fn parse_response(id: u64, line: &[u8]) -> Result<Trace, Failure> {
         }),
         _ => Err(garbage("exactly one of \"trace\" and \"error\" expected".to_string())),
     }
+}
+
+/// The usual answer, `{"id", "trace"}` and nothing else, read straight into its id and trace;
+/// anything else is left to [`parse_response`]'s long way, which says what is wrong.
+pub(crate) fn usual_answer(line: &[u8]) -> Option<(u64, Trace)> {
+    #[derive(Deserialize)]
+    #[serde(deny_unknown_fields)]
+    struct Answer {
+        id: u64,
+        trace: Trace,
+    }
+    serde_json::from_slice::<Answer>(line).ok().map(|a| (a.id, a.trace))
 }
 
 /// The start of `bytes`, as lossy text, for a report.
