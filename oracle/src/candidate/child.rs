@@ -3,6 +3,7 @@
 
 use super::Limits;
 use cycle_vocab::text::Trace;
+use cycle_vocab::Config;
 use crate::engine::{Failure, FailureKind};
 use std::io::{BufRead, BufReader, Read, Write};
 use std::os::unix::process::CommandExt as _;
@@ -13,6 +14,12 @@ use std::time::{Duration, Instant};
 
 /// How much of the child's stderr is kept for reports (the last bytes).
 const STDERR_TAIL: usize = 4096;
+
+/// A line for the child: as it is, or a case's request ([`super::request`]) to be written.
+pub(super) enum Outgoing {
+    Line(Vec<u8>),
+    Request(u64, Vec<u8>, Box<Config>),
+}
 
 /// An answer line and its usual reading, if any: id and trace.
 pub(super) type Answer = (Vec<u8>, Option<(u64, Trace)>);
@@ -74,7 +81,7 @@ fn read_lines(stdout: ChildStdout, cap: usize, lines: Sender<Line>) {
 /// A running child and its three pipe threads.
 pub(super) struct Running {
     pub(super) child: Child,
-    pub(super) requests: Option<Sender<Vec<u8>>>,
+    pub(super) requests: Option<Sender<Vec<Outgoing>>>,
     lines: Receiver<Line>,
     stderr: Arc<Mutex<Vec<u8>>>,
 }
@@ -95,12 +102,21 @@ impl Running {
             let _ = child.wait();
             return Err(Failure { kind: FailureKind::Spawn, message: "no pipes to the child".to_string() });
         };
-        let (requests, to_write) = mpsc::channel::<Vec<u8>>();
+        let (requests, to_write) = mpsc::channel::<Vec<Outgoing>>();
         std::thread::spawn(move || {
-            // Requests queued meanwhile go out in the same write.
-            while let Ok(mut lines) = to_write.recv() {
-                lines.extend(to_write.try_iter().flatten());
-                if stdin.write_all(&lines).and_then(|()| stdin.flush()).is_err() {
+            // Requests are written here, off the campaign's thread; those queued meanwhile go
+            // out in the same write.
+            let mut bytes = Vec::new();
+            while let Ok(batch) = to_write.recv() {
+                bytes.clear();
+                for out in batch.into_iter().chain(to_write.try_iter().flatten()) {
+                    match out {
+                        Outgoing::Line(line) => bytes.extend_from_slice(&line),
+                        Outgoing::Request(id, program, config) => bytes.extend_from_slice(super::request(id, &program, &config).as_bytes()),
+                    }
+                    bytes.push(b'\n');
+                }
+                if stdin.write_all(&bytes).and_then(|()| stdin.flush()).is_err() {
                     return;
                 }
             }
@@ -133,12 +149,11 @@ impl Running {
         }
     }
 
-    /// Sends one line (with its newline). A failed send means the writer thread ended (the
-    /// child closed stdin or exited): the answer, or its absence, tells what happened.
-    pub(super) fn send(&self, mut line: Vec<u8>) {
-        line.push(b'\n');
-        if let Some(requests) = &self.requests {
-            let _ = requests.send(line);
+    /// Sends lines, each written with its newline. A failed send means the writer thread ended
+    /// (the child closed stdin or exited): the answer, or its absence, tells what happened.
+    pub(super) fn send(&self, batch: Vec<Outgoing>) {
+        if let (Some(requests), false) = (&self.requests, batch.is_empty()) {
+            let _ = requests.send(batch);
         }
     }
 

@@ -9,8 +9,8 @@
 //! refusal) while later requests were in flight, the failure cannot be told from theirs: the
 //! case is run again alone on a fresh child, and that run's outcome is the case's.
 
-use super::child::Running;
-use super::{hello, parse_hello, parse_response, request, schema_for_case, split_command, version_of, Limits, Speaks};
+use super::child::{Outgoing, Running};
+use super::{hello, parse_hello, parse_response, schema_for_case, split_command, version_of, Limits, Speaks};
 use crate::engine::{Engine, Failure, FailureKind};
 use cycle_vocab::text::Trace;
 use cycle_vocab::Config;
@@ -95,7 +95,7 @@ impl CandidateEngine {
         s.starts += 1;
         s.speaks = Speaks::LEGACY;
         if s.greet {
-            running.send(hello().into_bytes());
+            running.send(vec![Outgoing::Line(hello().into_bytes())]);
             let answer = running.answer(Instant::now() + self.limits.timeout, self.limits, self.limits.timeout);
             match answer.and_then(|(line, _)| parse_hello(&line)) {
                 Ok(speaks) => s.speaks = speaks,
@@ -120,11 +120,16 @@ impl CandidateEngine {
     }
 
     /// Sends queued requests to the running child while fewer than its window are in flight
-    /// (`alone`: only the first). Requests of versions it did not announce are never sent.
+    /// (`alone`: only the first). A pipelining child's window is topped up once half of it is
+    /// answered, in one batch. Requests of versions it did not announce are never sent.
     fn fill(s: &mut State, alone: bool) {
         let Some(running) = &s.running else { return };
         let window = if alone { 1 } else if s.speaks.pipeline { WINDOW } else { 1 };
         let mut in_flight = s.queue.iter().filter(|q| q.sent.is_some()).count();
+        if window > 1 && in_flight > window / 2 {
+            return;
+        }
+        let mut batch = Vec::new();
         for q in s.queue.iter_mut() {
             if in_flight >= window {
                 break;
@@ -133,10 +138,11 @@ impl CandidateEngine {
                 continue;
             }
             s.next_id += 1;
-            running.send(request(s.next_id, &q.program, &q.config).into_bytes());
+            batch.push(Outgoing::Request(s.next_id, q.program.clone(), Box::new(q.config)));
             q.sent = Some((s.next_id, Instant::now()));
             in_flight += 1;
         }
+        running.send(batch);
     }
 
     /// Reads and drops the answers to every request in flight (the campaign asked for another

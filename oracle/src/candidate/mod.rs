@@ -29,6 +29,7 @@ mod child;
 mod engine;
 mod serve;
 mod split;
+mod wire;
 pub use engine::{CandidateEngine, WINDOW};
 pub use serve::serve;
 pub use split::split_command;
@@ -246,7 +247,7 @@ pub(crate) fn usual_answer(line: &[u8]) -> Option<(u64, Trace)> {
         id: u64,
         trace: Trace,
     }
-    serde_json::from_slice::<Answer>(line).ok().map(|a| (a.id, a.trace))
+    wire::read(line).or_else(|| serde_json::from_slice::<Answer>(line).ok().map(|a| (a.id, a.trace)))
 }
 
 /// The start of `bytes`, as lossy text, for a report.
