@@ -358,10 +358,12 @@ pub fn run_engine(
     let (mut tally, mut corpus, mut failures, mut groups) = (tally::Tally::default(), Vec::new(), Vec::new(), Vec::new());
     let (mut consecutive, mut stopped) = (0u32, None);
     let write_error = |e: std::io::Error| Error(format!("cannot write cases.jsonl: {e}"));
-    // The engine is told the next cases ahead, so a candidate child computes while this judges.
+    // An external candidate is told the next cases ahead, so its child computes while this
+    // judges (a run stopped early has drawn those cases too).
+    let lookahead = if argv.is_some() { crate::candidate::WINDOW } else { 0 };
     let mut ahead = std::collections::VecDeque::new();
     loop {
-        while ahead.len() <= crate::candidate::WINDOW {
+        while ahead.len() <= lookahead {
             let Some(p) = cases.next() else { break };
             engine.prefetch(&p.program, &p.config);
             ahead.push_back(p);
