@@ -2,8 +2,12 @@
 """An example candidate expander for `cyclecheck`, in Python 3 (standard library only).
 
 It speaks the candidate protocol `cyclecheck-candidate/1` (docs/CANDIDATE.md): one JSON request
-per line on stdin, one JSON response per line on stdout. It refuses requests of schema version 2
-(programs with arcs or G70–G72), as a version-1 candidate should: they are reported as refused. It is an independent implementation of
+per line on stdin, one JSON response per line on stdout. It answers the greeting
+(`cyclecheck-candidate/hello`) with version 1 and `"pipeline": true`, so cyclecheck sends it no
+later version and reports those cases as refused; it still refuses a request of any other
+version, as a version-1 candidate should. `--legacy` makes it refuse the greeting too, as every
+candidate written before the greeting does: it is then sent every version, one request at a
+time, and refuses the others case by case. It is an independent implementation of
 the G92 single thread cycle (M002) and of the program rules a G92 program needs, written from
 docs/RULES.md and docs/INTERPRETATION.md: the lexer (PRJ.LEX, PRJ.WORD), the modal interpreter
 (PRJ.MODAL, PRJ.SUPPORTED, COM.ABSINC, COM.LEAD), word values and ranges (COM.UNITS, COM.RANGES),
@@ -12,6 +16,7 @@ and the alarms a G92 program can raise. The second block of a G76/G78 cycle is o
 it answers with an error for such programs (run it with `cyclecheck certify --cycles g92`).
 
     cyclecheck certify --cycles g92 --candidate 'python3 examples/g92_candidate.py'
+    cyclecheck certify --cycles g92 --candidate 'python3 examples/g92_candidate.py --legacy'
 
 `--plant-bug` plants a deliberate bug for the harness's own test: the end X of every G92
 pull-out on a Z-long thread is one increment further out than the rule gives (G92.PULLOUT).
@@ -21,7 +26,9 @@ import json
 import sys
 
 SCHEMA = "cyclecheck-candidate/1"
+HELLO = "cyclecheck-candidate/hello"
 PLANT_BUG = "--plant-bug" in sys.argv[1:]
+LEGACY = "--legacy" in sys.argv[1:]
 
 N = 999_999_999  # the largest length, increments (COM.RANGES)
 JK_MAX = 99_999_999  # G92 J, K
@@ -586,6 +593,9 @@ def answer(line):
         rid = req["id"]
     except (ValueError, KeyError, TypeError) as e:
         return {"id": 0, "error": "bad request: %s" % e}
+    if req.get("schema") == HELLO and not LEGACY and 1 in req.get("versions", []):
+        # It answers in order whatever it is sent ahead: cyclecheck may pipeline requests.
+        return {"schema": HELLO, "id": rid, "versions": [1], "pipeline": True}
     if req.get("schema") != SCHEMA:
         return {"id": rid, "error": "unsupported schema %r (this candidate speaks %s)" % (req.get("schema"), SCHEMA)}
     program = req["program"].encode("utf-8") if "program" in req else bytes.fromhex(req["program_hex"])

@@ -46,6 +46,11 @@ pub trait Engine {
         Ok(self.expand(program, config))
     }
 
+    /// A hint: `program` under `config` will be asked for after the cases hinted before it, so
+    /// an engine that works beside the caller (a candidate child) can start on it. Callers hint
+    /// a bounded window ahead and then ask for those cases in order. By default nothing.
+    fn prefetch(&self, _program: &[u8], _config: &Config) {}
+
     /// Pushes the trace into `sink` event by event and returns its alarm (the trace's grid is
     /// the configuration's). After `Break` the sink gets no more events and the result says
     /// nothing of the rest. By default the trace is expanded whole, then pushed.

@@ -13,6 +13,7 @@
 //! ```
 #![forbid(unsafe_code)]
 
+pub mod bench_harness;
 pub mod campaign;
 pub mod candidate;
 pub mod catalogue;

@@ -1,13 +1,16 @@
-//! The candidate protocol end to end, through the `cyclecheck` binary: the example Python
-//! candidate (`examples/g92_candidate.py`) passes `certify --cycles g92`, the same candidate
-//! with its planted bug fails with the divergent move and rule named, and a hostile candidate
-//! (sleeps, floods, garbage, exits) gets each case classified while the run completes.
+//! The candidate protocol end to end, through the `cyclecheck` binary: `cyclecheck serve`
+//! conforms as a candidate; the example Python candidate (`examples/g92_candidate.py`) passes
+//! `certify --cycles g92`, greeted or legacy, the same candidate with its planted bug fails with
+//! the divergent move and rule named, and a hostile candidate (sleeps, floods, garbage, exits)
+//! gets each case classified while the run completes, pipelined or not.
 //!
-//! These tests need `python3`; without it they print why and pass vacuously (the rest of the
-//! suite covers the protocol in-process: `cycle_oracle::candidate` unit tests).
+//! The tests of Python candidates need `python3`; without it they print why and pass vacuously
+//! (the rest of the suite covers the protocol in-process: `cycle_oracle::candidate` unit tests).
 
+use cycle_oracle::candidate::{CandidateEngine, Limits};
 use cycle_oracle::corpus;
-use cycle_vocab::{Event, Rule};
+use cycle_oracle::engine::{Engine, FailureKind};
+use cycle_vocab::{Config, Event, Rule};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -80,6 +83,90 @@ fn the_example_candidate_passes() {
     assert!(e["summary"]["cases"].as_u64().unwrap() >= 60, "{}", e["summary"]);
     assert!(out.join("index.html").is_file() && out.join("plots/g92_example.svg").is_file());
     std::fs::remove_dir_all(&out).unwrap();
+}
+
+/// The production expander behind the protocol conforms on every family and the garbage
+/// generator, in one child that announced every version and pipelining.
+#[test]
+fn cyclecheck_serve_conforms_as_a_candidate() {
+    let out = out_dir("serve");
+    let serve = format!("'{}' serve", env!("CARGO_BIN_EXE_cyclecheck"));
+    let o = Command::new(env!("CARGO_BIN_EXE_cyclecheck"))
+        .arg("certify")
+        .arg("--out")
+        .arg(&out)
+        .args(["--cases", "12", "--candidate", &serve])
+        .output()
+        .expect("cyclecheck runs");
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{stdout}\n{}", String::from_utf8_lossy(&o.stderr));
+    let e = evidence(&out);
+    assert_eq!(e["summary"]["passed"], true, "{}", e["summary"]);
+    assert_eq!(e["candidate"]["process_starts"], 1);
+    let cases = case_lines(&out);
+    assert!(cases.len() > 200, "{}", cases.len());
+    assert!(cases.iter().all(|c| c["result"] == "conform"), "{:?}", cases.iter().find(|c| c["result"] != "conform"));
+    std::fs::remove_dir_all(&out).unwrap();
+}
+
+/// The example answers the greeting with version 1: the operator cases (version 4) are
+/// refused without being sent. As a legacy candidate (`--legacy`, the greeting refused) it is
+/// sent them and refuses them itself; every other case conforms either way.
+#[test]
+fn versions_are_negotiated_and_legacy_candidates_still_run() {
+    if !python3() {
+        return;
+    }
+    for (legacy, refusal) in [(false, "not sent: the candidate speaks versions 1 of the protocol, not 4"), (true, "unsupported schema")] {
+        let out = out_dir(if legacy { "legacy" } else { "greeted" });
+        let candidate = format!("{}{}", example_candidate(false), if legacy { " --legacy" } else { "" });
+        let o = certify(&out, &candidate, &["--cases", "40"]);
+        assert!(String::from_utf8_lossy(&o.stdout).contains(" 0 diverge"), "{}", String::from_utf8_lossy(&o.stdout));
+        let cases = case_lines(&out);
+        let refused: Vec<&serde_json::Value> = cases.iter().filter(|c| c["kind"] == "refused").collect();
+        assert!(refused.len() > 1, "the operator cases with a script are refused");
+        assert!(refused.iter().all(|c| c["name"].as_str().unwrap().starts_with("operator#")), "{:?}", refused);
+        assert!(refused.iter().all(|c| c["message"].as_str().unwrap().starts_with(refusal)), "{:?}", refused[0]);
+        assert!(cases.iter().all(|c| c["result"] == "conform" || c["kind"] == "refused"));
+        std::fs::remove_dir_all(&out).unwrap();
+    }
+}
+
+/// A pipelining candidate, many requests in flight: each failure is the case's own (the case
+/// run again alone on a fresh child), the requests in flight reach the next child, and a
+/// version it did not announce is never sent.
+#[test]
+fn pipelined_failures_are_the_failing_case_s() {
+    if !python3() {
+        return;
+    }
+    let script = root().join("oracle/tests/fixtures/pipelined_candidate.py");
+    let limits = Limits { timeout: std::time::Duration::from_millis(3000), ..Limits::default() };
+    let engine = CandidateEngine::new(&format!("python3 '{}' 1,3", script.display()), limits).unwrap();
+    let c = Config::default();
+    let programs: Vec<String> = ["", "(CRASH)", "", "(GARBAGE)", "", "G02 X1 Z1 R1 F1", "G84 Z-21 R2 F60", "(SLEEP)", ""]
+        .iter()
+        .map(|p| format!("G0 X1 Z1\n{p}\n"))
+        .collect();
+    for p in &programs {
+        engine.prefetch(p.as_bytes(), &c);
+    }
+    let outcomes: Vec<(FailureKind, String)> = programs
+        .iter()
+        .map(|p| engine.try_expand(p.as_bytes(), &c).map(|_| ()).unwrap_err())
+        .map(|f| (f.kind, f.message))
+        .collect();
+    let kinds: Vec<FailureKind> = outcomes.iter().map(|o| o.0).collect();
+    use FailureKind::{Crash, Garbage, Refused, Timeout};
+    assert_eq!(kinds, [Refused, Crash, Refused, Garbage, Refused, Refused, Refused, Timeout, Refused], "{outcomes:?}");
+    assert!(outcomes[5].1.starts_with("not sent: the candidate speaks versions 1, 3"), "{:?}", outcomes[5]);
+    for i in [0, 2, 4, 8] {
+        assert_eq!(outcomes[i].1, "seen cyclecheck-candidate/1", "case {i}");
+    }
+    assert_eq!(outcomes[6].1, "seen cyclecheck-candidate/3");
+    assert!(engine.speaks().pipeline);
+    // A child for the start, and for each failure: two (in flight, then alone) for each of the three.
+    assert_eq!(engine.starts(), 7);
 }
 
 /// The planted bug moves the end X of the G92 pull-out one increment: the report names that

@@ -1,9 +1,12 @@
 //! A vendor's expander as an [`Engine`]: a child process speaking the candidate protocol
-//! `cyclecheck-candidate/1` (`docs/CANDIDATE.md`).
+//! `cyclecheck-candidate/1` to `/4` (`docs/CANDIDATE.md`); and the production expander speaking
+//! it ([`serve`], `cyclecheck serve`).
 //!
 //! One JSON request per line on the child's stdin — `{"schema", "id", "program" (or
 //! "program_hex"), "config"}` — and one JSON response per line on its stdout: `{"id", "trace"}`
 //! with the trace exactly as `cyclecheck expand --format json` prints it, or `{"id", "error"}`.
+//! Each child is first greeted ([`hello`]): it answers the versions it speaks, and whether it
+//! takes requests pipelined, or refuses the greeting (a legacy candidate).
 //!
 //! The child is hostile until proven otherwise:
 //! - the command line is split here ([`split_command`]) and executed directly, never through a
@@ -16,17 +19,19 @@
 //! - the child runs in a process group of its own, killed whole — with anything it started —
 //!   after a failure, at the end of the run and on SIGINT/SIGTERM ([`crate::reaper`]).
 
-use crate::engine::{Engine, Failure, FailureKind};
+use crate::engine::{Failure, FailureKind};
 use cycle_vocab::text::Trace;
 use cycle_vocab::Config;
-use std::io::{BufRead, BufReader, Read, Write};
-use std::os::unix::process::CommandExt as _;
-use std::process::{Child, ChildStdout, Command, Stdio};
-use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
-use std::sync::{Arc, Mutex};
+use serde::{Deserialize, Serialize};
 use std::time::Duration;
 
+mod child;
+mod engine;
+mod serve;
 mod split;
+mod wire;
+pub use engine::{CandidateEngine, WINDOW};
+pub use serve::serve;
 pub use split::split_command;
 
 /// The protocol's first schema version: the thread cycles' events (rapids, feeds, thread moves,
@@ -81,9 +86,6 @@ pub fn schema_for(program: &[u8]) -> &'static str {
     }
 }
 
-/// How much of the child's stderr is kept for reports (the last bytes).
-const STDERR_TAIL: usize = 4096;
-
 /// How much of a garbage answer a report quotes.
 const SNIPPET: usize = 200;
 
@@ -110,21 +112,110 @@ impl Default for Limits {
     }
 }
 
+/// The version number of a schema name (`cyclecheck-candidate/3` → 3), if it is one of ours.
+pub fn version_of(schema: &str) -> Option<u8> {
+    [SCHEMA, SCHEMA_2, SCHEMA_3, SCHEMA_4].iter().position(|s| *s == schema).map(|i| i as u8 + 1)
+}
+
 /// The request line for case `id` (without the newline). The program goes as `program` when it
 /// is UTF-8, else as `program_hex` (two lowercase hex digits per byte). Every parameter is
 /// named: those the configuration leaves unset with the reference's defaults.
 pub fn request(id: u64, program: &[u8], config: &Config) -> String {
-    let config = Config { params: cycle_spec::config::params(config).as_set(), ..*config };
-    let mut req = serde_json::json!({ "schema": schema_for_case(program, &config), "id": id, "config": config });
-    match std::str::from_utf8(program) {
-        Ok(text) => req["program"] = text.into(),
-        Err(_) => req["program_hex"] = program.iter().map(|b| format!("{b:02x}")).collect::<String>().into(),
+    #[derive(Serialize)]
+    struct Request<'a> {
+        schema: &'static str,
+        id: u64,
+        config: &'a Config,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        program: Option<&'a str>,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        program_hex: Option<String>,
     }
-    req.to_string()
+    let config = Config { params: cycle_spec::config::params(config).as_set(), ..*config };
+    let text = std::str::from_utf8(program).ok();
+    let program_hex = text.is_none().then(|| program.iter().map(|b| format!("{b:02x}")).collect());
+    let req = Request { schema: schema_for_case(program, &config), id, config: &config, program: text, program_hex };
+    serde_json::to_string(&req).expect("a request serializes")
+}
+
+/// The schema of the greeting ([`hello`]) and of its answer.
+pub const HELLO: &str = "cyclecheck-candidate/hello";
+
+/// The versions this build speaks, offered in the greeting.
+pub const VERSIONS: [u8; 4] = [1, 2, 3, 4];
+
+/// The greeting sent first to every child (id 0, which no case has):
+/// `{"schema":"cyclecheck-candidate/hello","id":0,"versions":[1,2,3,4]}`.
+pub fn hello() -> String {
+    serde_json::json!({ "schema": HELLO, "id": 0, "versions": VERSIONS }).to_string()
+}
+
+/// What a child said to the greeting.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Speaks {
+    /// Bit v − 1 set for each version v it speaks (of those offered).
+    pub versions: u8,
+    /// Whether it takes several requests before answering the first (answering in order).
+    pub pipeline: bool,
+}
+
+impl Speaks {
+    /// A legacy candidate (it refused the greeting): sent every version, one request at a time.
+    pub const LEGACY: Speaks = Speaks { versions: 0b1111, pipeline: false };
+
+    pub fn speaks(self, version: u8) -> bool {
+        (1..=8).contains(&version) && self.versions & (1 << (version - 1)) != 0
+    }
+
+    /// The versions, as a list for a report: `1, 2`.
+    pub fn list(self) -> String {
+        let v: Vec<String> = VERSIONS.iter().filter(|&&v| self.speaks(v)).map(u8::to_string).collect();
+        if v.is_empty() {
+            "none".to_string()
+        } else {
+            v.join(", ")
+        }
+    }
+}
+
+/// Reads the answer to the greeting: `{"id": 0, "versions": [..], "pipeline": bool}` (versions
+/// not offered are ignored; `pipeline` defaults to false), or a refusal `{"id": 0, "error"}` —
+/// a legacy candidate, [`Speaks::LEGACY`]. Anything else is garbage.
+pub fn parse_hello(line: &[u8]) -> Result<Speaks, Failure> {
+    let garbage = |why: &str| Failure { kind: FailureKind::Garbage, message: format!("{why}; answer: {}", snippet(line)) };
+    let value: serde_json::Value = serde_json::from_slice(line).map_err(|e| garbage(&format!("not JSON ({e})")))?;
+    let Some(object) = value.as_object() else { return Err(garbage("not a JSON object")) };
+    if object.get("id").and_then(serde_json::Value::as_u64) != Some(0) {
+        return Err(garbage("the greeting's \"id\" is 0"));
+    }
+    match (object.get("versions"), object.get("error")) {
+        (None, Some(_)) => Ok(Speaks::LEGACY),
+        (Some(serde_json::Value::Array(list)), None) => {
+            let mut versions = 0u8;
+            for v in list {
+                match v.as_u64() {
+                    Some(v) if VERSIONS.contains(&(v as u8)) && v <= 8 => versions |= 1 << (v - 1),
+                    Some(_) => {}
+                    None => return Err(garbage("\"versions\" lists integers")),
+                }
+            }
+            let pipeline = match object.get("pipeline") {
+                None => false,
+                Some(p) => p.as_bool().ok_or_else(|| garbage("\"pipeline\" is true or false"))?,
+            };
+            Ok(Speaks { versions, pipeline })
+        }
+        _ => Err(garbage("exactly one of \"versions\" (a list) and \"error\" expected")),
+    }
 }
 
 /// Reads the answer line to request `id`: the trace, or the failure it amounts to.
 pub fn parse_response(id: u64, line: &[u8]) -> Result<Trace, Failure> {
+    if let Some((got, trace)) = usual_answer(line) {
+        if got == id {
+            return Ok(trace);
+        }
+    }
     let garbage = |why: String| Failure { kind: FailureKind::Garbage, message: format!("{why}; answer: {}", snippet(line)) };
     let value: serde_json::Value = serde_json::from_slice(line).map_err(|e| garbage(format!("not JSON ({e})")))?;
     let Some(object) = value.as_object() else {
@@ -147,6 +238,18 @@ pub fn parse_response(id: u64, line: &[u8]) -> Result<Trace, Failure> {
     }
 }
 
+/// The usual answer, `{"id", "trace"}` and nothing else, read straight into its id and trace;
+/// anything else is left to [`parse_response`]'s long way, which says what is wrong.
+pub(crate) fn usual_answer(line: &[u8]) -> Option<(u64, Trace)> {
+    #[derive(Deserialize)]
+    #[serde(deny_unknown_fields)]
+    struct Answer {
+        id: u64,
+        trace: Trace,
+    }
+    wire::read(line).or_else(|| serde_json::from_slice::<Answer>(line).ok().map(|a| (a.id, a.trace)))
+}
+
 /// The start of `bytes`, as lossy text, for a report.
 fn snippet(bytes: &[u8]) -> String {
     let text = String::from_utf8_lossy(&bytes[..bytes.len().min(SNIPPET)]).into_owned();
@@ -157,255 +260,10 @@ fn snippet(bytes: &[u8]) -> String {
     }
 }
 
-/// What the stdout thread saw.
-enum Line {
-    /// One answer line, without its newline.
-    Text(Vec<u8>),
-    /// A line longer than the cap (the thread stops reading).
-    TooLong(usize),
-    /// End of output (the child exited or closed stdout), or a read error.
-    End(String),
-}
-
-/// Reads lines of at most `cap` bytes and sends them; stops at the end, an error or an
-/// oversized line.
-fn read_lines(stdout: ChildStdout, cap: usize, lines: Sender<Line>) {
-    let mut reader = BufReader::new(stdout);
-    loop {
-        let mut line = Vec::new();
-        loop {
-            let buf = match reader.fill_buf() {
-                Ok(buf) => buf,
-                Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
-                Err(e) => {
-                    let _ = lines.send(Line::End(format!("read error: {e}")));
-                    return;
-                }
-            };
-            if buf.is_empty() {
-                let _ = lines.send(Line::End("end of output".to_string()));
-                return;
-            }
-            let (take, done) = match buf.iter().position(|&b| b == b'\n') {
-                Some(i) => (i + 1, true),
-                None => (buf.len(), false),
-            };
-            line.extend_from_slice(&buf[..take]);
-            reader.consume(take);
-            if line.len() > cap.saturating_add(2) {
-                let _ = lines.send(Line::TooLong(line.len()));
-                return;
-            }
-            if done {
-                break;
-            }
-        }
-        while matches!(line.last(), Some(b'\n' | b'\r')) {
-            line.pop();
-        }
-        if lines.send(Line::Text(line)).is_err() {
-            return;
-        }
-    }
-}
-
-/// A running child and its three pipe threads.
-struct Running {
-    child: Child,
-    requests: Option<Sender<Vec<u8>>>,
-    lines: Receiver<Line>,
-    stderr: Arc<Mutex<Vec<u8>>>,
-}
-
-impl Running {
-    fn start(argv: &[String], limits: Limits) -> Result<Running, Failure> {
-        let mut child = Command::new(&argv[0])
-            .args(&argv[1..])
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .process_group(0)
-            .spawn()
-            .map_err(|e| Failure { kind: FailureKind::Spawn, message: format!("cannot start {:?}: {e}", argv[0]) })?;
-        crate::reaper::register_group(child.id());
-        let (Some(mut stdin), Some(stdout), Some(mut stderr_pipe)) = (child.stdin.take(), child.stdout.take(), child.stderr.take()) else {
-            crate::reaper::kill_group(child.id());
-            let _ = child.wait();
-            return Err(Failure { kind: FailureKind::Spawn, message: "no pipes to the child".to_string() });
-        };
-        let (requests, to_write) = mpsc::channel::<Vec<u8>>();
-        std::thread::spawn(move || {
-            for line in to_write {
-                if stdin.write_all(&line).and_then(|()| stdin.flush()).is_err() {
-                    return;
-                }
-            }
-        });
-        let (send_line, lines) = mpsc::channel();
-        let cap = limits.max_output;
-        std::thread::spawn(move || read_lines(stdout, cap, send_line));
-        let stderr = Arc::new(Mutex::new(Vec::new()));
-        let tail = Arc::clone(&stderr);
-        std::thread::spawn(move || {
-            let mut buf = [0u8; 4096];
-            while let Ok(n @ 1..) = stderr_pipe.read(&mut buf) {
-                if let Ok(mut t) = tail.lock() {
-                    t.extend_from_slice(&buf[..n]);
-                    let excess = t.len().saturating_sub(STDERR_TAIL);
-                    t.drain(..excess);
-                }
-            }
-        });
-        Ok(Running { child, requests: Some(requests), lines, stderr })
-    }
-
-    /// The last lines the child wrote to stderr, if any.
-    fn stderr_tail(&self) -> String {
-        let tail = self.stderr.lock().map(|t| String::from_utf8_lossy(&t).trim().to_string()).unwrap_or_default();
-        if tail.is_empty() {
-            String::new()
-        } else {
-            format!("; stderr: {tail}")
-        }
-    }
-
-    /// Kills the child's process group (the child and whatever it started) and reaps the child.
-    fn stop(mut self) {
-        self.requests = None;
-        crate::reaper::kill_group(self.child.id());
-        let _ = self.child.wait();
-    }
-}
-
-/// The candidate engine: one child at a time, restarted after any failure.
-pub struct CandidateEngine {
-    argv: Vec<String>,
-    limits: Limits,
-    state: Mutex<State>,
-}
-
-#[derive(Default)]
-struct State {
-    running: Option<Running>,
-    next_id: u64,
-    starts: u64,
-}
-
-impl CandidateEngine {
-    /// An engine for `command` (split by [`split_command`]); the child starts at the first case.
-    pub fn new(command: &str, limits: Limits) -> Result<CandidateEngine, String> {
-        let argv = split_command(command)?;
-        Ok(CandidateEngine { argv, limits, state: Mutex::new(State::default()) })
-    }
-
-    /// The command as split.
-    pub fn argv(&self) -> &[String] {
-        &self.argv
-    }
-
-    pub fn limits(&self) -> Limits {
-        self.limits
-    }
-
-    /// How many times a child was started (1 + restarts after failures, when it ran at all).
-    pub fn starts(&self) -> u64 {
-        self.state.lock().map_or(0, |s| s.starts)
-    }
-
-    fn ask(&self, state: &mut State, program: &[u8], config: &Config) -> Result<Trace, Failure> {
-        if state.running.is_none() {
-            state.running = Some(Running::start(&self.argv, self.limits)?);
-            state.starts += 1;
-        }
-        state.next_id += 1;
-        let id = state.next_id;
-        let running = state.running.as_mut().expect("started above");
-        let mut line = request(id, program, config).into_bytes();
-        line.push(b'\n');
-        if let Some(requests) = &running.requests {
-            // A failed send means the writer thread ended (the child closed stdin or exited):
-            // the answer (or its absence) tells what happened.
-            let _ = requests.send(line);
-        }
-        let timeout = self.limits.timeout;
-        match running.lines.recv_timeout(timeout) {
-            Ok(Line::Text(answer)) => parse_response(id, &answer),
-            Ok(Line::TooLong(n)) => Err(Failure {
-                kind: FailureKind::OutputTooLarge,
-                message: format!("answer line over {} bytes (read {n})", self.limits.max_output),
-            }),
-            Ok(Line::End(why)) => Err(crash(running, &why)),
-            Err(RecvTimeoutError::Disconnected) => Err(crash(running, "output reader ended")),
-            Err(RecvTimeoutError::Timeout) => Err(Failure {
-                kind: FailureKind::Timeout,
-                message: format!("no answer within {} ms{}", timeout.as_millis(), running.stderr_tail()),
-            }),
-        }
-    }
-}
-
-/// The failure of a child that stopped answering: `why`, its exit status (waiting up to 200 ms
-/// for it to exit) and its last stderr lines.
-fn crash(running: &mut Running, why: &str) -> Failure {
-    let mut status = "still running".to_string();
-    for _ in 0..20 {
-        if let Ok(Some(s)) = running.child.try_wait() {
-            status = s.to_string();
-            break;
-        }
-        std::thread::sleep(Duration::from_millis(10));
-    }
-    Failure { kind: FailureKind::Crash, message: format!("{why}, {status}{}", running.stderr_tail()) }
-}
-
-impl Engine for CandidateEngine {
-    fn name(&self) -> &str {
-        "candidate"
-    }
-
-    /// The trace; a failure panics with its description (a campaign turns a panic into a
-    /// finding, never a pass). Use [`Engine::try_expand`] to get failures classified.
-    fn expand(&self, program: &[u8], config: &Config) -> Trace {
-        self.try_expand(program, config).unwrap_or_else(|f| panic!("candidate failure: {f}"))
-    }
-
-    fn try_expand(&self, program: &[u8], config: &Config) -> Result<Trace, Failure> {
-        let mut state = self.state.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-        let result = self.ask(&mut state, program, config);
-        // After anything but a trace or a well-formed refusal the child's state is unknown:
-        // stop it, the next case starts a fresh one.
-        if let Err(f) = &result {
-            if f.kind != FailureKind::Refused {
-                if let Some(r) = state.running.take() {
-                    r.stop();
-                }
-            }
-        }
-        result
-    }
-}
-
-impl Drop for CandidateEngine {
-    /// Closes the child's stdin (its signal to exit), gives it a moment, then kills its process
-    /// group: the child if it is still running, and whatever it left behind.
-    fn drop(&mut self) {
-        let state = self.state.get_mut().unwrap_or_else(std::sync::PoisonError::into_inner);
-        if let Some(mut r) = state.running.take() {
-            r.requests = None;
-            for _ in 0..50 {
-                if let Ok(Some(_)) = r.child.try_wait() {
-                    break;
-                }
-                std::thread::sleep(Duration::from_millis(10));
-            }
-            r.stop();
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::engine::Engine as _;
 
     #[test]
     fn requests_carry_schema_id_program_and_config() {
@@ -475,6 +333,26 @@ mod tests {
         }
         let e = parse_response(1, b"not json at all").unwrap_err();
         assert!(e.message.contains("\"not json at all\""), "{e}");
+    }
+
+    /// The greeting's answers: versions (only those offered count), a refusal (legacy), or
+    /// garbage.
+    #[test]
+    fn the_greeting_is_answered_with_versions_or_refused() {
+        let g: serde_json::Value = serde_json::from_str(&hello()).unwrap();
+        assert_eq!((g["schema"].as_str(), g["id"].as_u64()), (Some(HELLO), Some(0)));
+        assert_eq!(g["versions"], serde_json::json!([1, 2, 3, 4]));
+        let speaks = |line: &str| parse_hello(line.as_bytes());
+        assert_eq!(speaks(r#"{"id":0,"versions":[1,3,9]}"#), Ok(Speaks { versions: 0b101, pipeline: false }));
+        assert_eq!(speaks(r#"{"id":0,"versions":[],"pipeline":true}"#), Ok(Speaks { versions: 0, pipeline: true }));
+        assert_eq!(speaks(r#"{"id":0,"error":"unsupported schema"}"#), Ok(Speaks::LEGACY));
+        for bad in ["", "[]", r#"{"id":1,"versions":[1]}"#, r#"{"id":0,"versions":1}"#, r#"{"id":0,"versions":["1"]}"#, r#"{"id":0}"#,
+            r#"{"id":0,"versions":[1],"pipeline":1}"#, r#"{"id":0,"versions":[1],"error":"x"}"#] {
+            assert_eq!(speaks(bad).map_err(|f| f.kind), Err(FailureKind::Garbage), "{bad}");
+        }
+        assert_eq!(Speaks { versions: 0b101, pipeline: false }.list(), "1, 3");
+        assert!(!Speaks::LEGACY.speaks(5) && Speaks::LEGACY.speaks(4) && !Speaks::LEGACY.speaks(0));
+        assert_eq!((version_of(SCHEMA_3), version_of(HELLO)), (Some(3), None));
     }
 
     #[test]

@@ -376,11 +376,21 @@ pub fn run_engine(
     let (mut tally, mut corpus, mut failures, mut groups) = (tally::Tally::default(), Vec::new(), Vec::new(), Vec::new());
     let (mut consecutive, mut stopped) = (0u32, None);
     let write_error = |e: std::io::Error| Error(format!("cannot write cases.jsonl: {e}"));
-    while let Some(p) = cases.next() {
+    // An external candidate is told the next cases ahead, so its child computes while this
+    // judges (a run stopped early has drawn those cases too).
+    let lookahead = if argv.is_some() { crate::candidate::WINDOW } else { 0 };
+    let mut ahead = std::collections::VecDeque::new();
+    loop {
+        while ahead.len() <= lookahead {
+            let Some(p) = cases.next() else { break };
+            engine.prefetch(&p.program, &p.config);
+            ahead.push_back(p);
+        }
+        let Some(p) = ahead.pop_front() else { break };
         let in_corpus = matches!(p.origin, Origin::Corpus { .. });
         if tally.cases % 8 == 0 {
             let phase = if in_corpus { "corpus" } else { "generated" };
-            progress(Progress { phase, done: cases.drawn - 1, total: cases.total, bad: tally.cases - tally.conform });
+            progress(Progress { phase, done: cases.drawn - ahead.len() - 1, total: cases.total, bad: tally.cases - tally.conform });
         }
         let judged = if in_corpus { judge_keeping(&SpecEngine, engine, &p.program, &p.config) } else { judge(&SpecEngine, engine, &p.program, &p.config) };
         let record = CaseRecord::new(&p, judged);

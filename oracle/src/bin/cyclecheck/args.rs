@@ -13,7 +13,7 @@ use std::path::PathBuf;
     name = "cyclecheck",
     version = LONG_VERSION,
     about = "The lathe canned-cycle reference: expand programs, compare the production expander or your own with the reference spec, and write certification evidence.",
-    after_help = "Exit status: 0 success / the engines conform (an alarm both engines raise conforms); 1 the engines diverge or the candidate fails (diff, corpus, certify), a gate step or a fuzz campaign fails; 2 bad input (the command line, an unreadable file, an unusable --out) — and for expand, a program that ends in an alarm; 130 interrupted (SIGINT/SIGTERM).\nREADME.md is the guide; docs/CANDIDATE.md the candidate protocol."
+    after_help = "Exit status: 0 success / the engines conform (an alarm both engines raise conforms); 1 the engines diverge or the candidate fails (diff, corpus, certify, bench-harness), a gate step or a fuzz campaign fails; 2 bad input (the command line, an unreadable file, an unusable --out) — and for expand, a program that ends in an alarm; 130 interrupted (SIGINT/SIGTERM).\nREADME.md is the guide; docs/CANDIDATE.md the candidate protocol."
 )]
 pub struct Cli {
     #[command(subcommand)]
@@ -36,6 +36,10 @@ pub enum Command {
     Gate(GateArgs),
     /// The nightly fuzz campaign with cargo-fuzz; or write the seeds; or decode a fuzz input (run from the repository root).
     Fuzz(FuzzArgs),
+    /// Answer the candidate protocol on stdin/stdout with the production expander (a reference peer: --candidate 'cyclecheck serve').
+    Serve,
+    /// Measure the harness's rates in one run, as ratios: in-process campaign, cyclecheck serve as candidate, diff_spec_impl under libFuzzer.
+    BenchHarness(BenchArgs),
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
@@ -146,7 +150,7 @@ pub struct ConfigArgs {
 /// A candidate and its limits (docs/CANDIDATE.md).
 #[derive(Args, Debug)]
 pub struct CandidateArgs {
-    /// An external expander speaking cyclecheck-candidate/1 (/2 for arcs and G70–G72, /3 for G73–G75, G83, G84), instead of the production expander; split like a shell command line (quotes, backslashes) and run without a shell.
+    /// An external expander speaking cyclecheck-candidate/1 to /4 (the versions it answers the greeting with; /2 for arcs and G70–G72, /3 for G73–G75, G83, G84, /4 for operator scripts), instead of the production expander; split like a shell command line (quotes, backslashes) and run without a shell.
     #[arg(long, value_name = "CMD")]
     pub candidate: Option<String>,
     /// Time allowed per case.
@@ -317,4 +321,23 @@ pub struct FuzzArgs {
     /// Write a fuzz input as a decoded regression case (tests/fuzz_regressions/TARGET/NAME), then exit.
     #[arg(long, num_args = 2..=3, value_names = ["TARGET", "FILE", "NAME"])]
     pub decode: Option<Vec<String>>,
+}
+
+#[derive(Args, Debug)]
+pub struct BenchArgs {
+    /// Generated cases per family in each campaign (certify's cases: the corpus, then each generator).
+    #[arg(long, value_name = "N", default_value_t = 100)]
+    pub cases: u32,
+    /// Rounds of each campaign, interleaved; the best counts.
+    #[arg(long, value_name = "N", default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..))]
+    pub rounds: u32,
+    /// The diff_spec_impl libFuzzer binary (built by cargo fuzz build); default: fuzz/target/x86_64-unknown-linux-gnu/release/diff_spec_impl when it exists.
+    #[arg(long, value_name = "FILE")]
+    pub fuzz_binary: Option<PathBuf>,
+    /// Executions of the fuzz binary (libFuzzer's -runs), starting from the seeds of fuzz/seeds/diff_spec_impl.
+    #[arg(long, value_name = "N", default_value_t = 30_000)]
+    pub fuzz_runs: u64,
+    /// A further libFuzzer flag for the fuzz binary (repeatable), e.g. --fuzz-arg=-entropic=0.
+    #[arg(long, value_name = "FLAG", allow_hyphen_values = true)]
+    pub fuzz_arg: Vec<String>,
 }

@@ -1,10 +1,10 @@
 //! `cyclecheck`: expand a program with either engine, diff the spec against the production
 //! expander or a candidate on programs, run the built-in corpus through both, write the
-//! certification evidence bundle (`certify`), gate a merge, fuzz. See the README ("The CLI") and
-//! `cyclecheck help`.
+//! certification evidence bundle (`certify`), gate a merge, fuzz, serve the production expander
+//! as a candidate, measure the harness's rates. See the README ("The CLI") and `cyclecheck help`.
 //!
 //! Exit codes: 0 success / the engines conform; 1 the engines diverge or the candidate fails
-//! (`diff`, `corpus`, `certify`), a gate step or a fuzz campaign fails; 2 bad input — and for
+//! (`diff`, `corpus`, `certify`, `bench-harness`), a gate step or a fuzz campaign fails; 2 bad input — and for
 //! `expand`, a program that ends in an alarm (named on stderr); 130 interrupted.
 
 mod args;
@@ -16,7 +16,7 @@ mod output;
 
 use args::{Cli, Command};
 use clap::Parser as _;
-use cycle_oracle::{gate, nightly};
+use cycle_oracle::{bench_harness as bench, candidate, certify, gate, nightly};
 use std::process::ExitCode;
 
 /// Bad input: a message for stderr, exit 2.
@@ -57,6 +57,8 @@ fn main() -> ExitCode {
             gate::command(&o).map_err(Bad)
         }
         Command::Fuzz(a) => fuzz_request(a).and_then(|r| nightly::command(r).map_err(Bad)),
+        Command::Serve => candidate::serve(std::io::stdin().lock(), std::io::stdout().lock()).map(|()| 0).map_err(|e| Bad(format!("serve: {e}"))),
+        Command::BenchHarness(a) => bench_harness(&a),
     };
     cycle_oracle::reaper::clean_up();
     match result {
@@ -87,4 +89,26 @@ fn fuzz_request(a: args::FuzzArgs) -> Result<nightly::Request, Bad> {
         fork: a.fork,
         rss_limit_mb: a.rss_limit_mb,
     })
+}
+
+/// `bench-harness`: the three rates and their ratios, as a Markdown table on stdout.
+fn bench_harness(a: &args::BenchArgs) -> Result<u8, Bad> {
+    let exe = std::env::current_exe().map_err(|e| Bad(format!("cannot find this executable: {e}")))?;
+    let default_binary = std::path::PathBuf::from("fuzz/target/x86_64-unknown-linux-gnu/release/diff_spec_impl");
+    let fuzz_binary = a.fuzz_binary.clone().or_else(|| default_binary.is_file().then_some(default_binary));
+    let existing = |p: &str| Some(std::path::PathBuf::from(p)).filter(|p| p.exists());
+    let o = bench::Options {
+        campaign: certify::Options { cases: a.cases, ..certify::Options::default() },
+        rounds: a.rounds,
+        serve: format!("'{}' serve", exe.display()),
+        fuzz_binary,
+        fuzz_seeds: existing("fuzz/seeds/diff_spec_impl"),
+        fuzz_dict: existing("fuzz/gcode.dict"),
+        fuzz_runs: a.fuzz_runs,
+        fuzz_args: a.fuzz_arg.clone(),
+    };
+    let report = bench::run(&o).map_err(Bad)?;
+    print!("{}", report.table());
+    let failed = report.in_process.bad + report.serve.bad + report.serve_lockstep.bad > 0 || matches!(report.fuzz, Some(Err(_)));
+    Ok(u8::from(failed))
 }
