@@ -69,7 +69,8 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     let (from, to) = if on_pullout { (s, e) } else { (c, s) };
     let p = (between(src, from.0, to.0), between(src, from.1, to.1));
 
-    let (manner, rapid, end) = retract_targets(p, on_pullout, has_pull.then_some((s, e)), a, z_long);
+    let r = retract_targets(p, on_pullout, has_pull.then_some((s, e)), a, z_long);
+    let (manner, rapid, end) = (r.manner, r.short, r.end);
 
     check!(src, manner.is_some() == has_pull, "G92.HOLD: a move in the pull-out manner exactly when the cut has a pull-out");
     let q = manner.unwrap_or(p);

@@ -91,12 +91,12 @@ impl Layer {
     fn retract(&mut self, core: &mut Core<'_>, m: &Move, p: (i64, i64), c: &CutInfo, rule: Rule) {
         self.press(Button::Hold, p, rule);
         self.cut_to(m, p);
-        let (manner, short, a) = retract_targets(p, c.role == Role::Pullout, c.pull, c.a, c.z_long);
-        if let Some(to) = manner {
+        let r = retract_targets(p, c.role == Role::Pullout, c.pull, c.a, c.z_long);
+        if let Some(to) = r.manner {
             self.move_to(Move::thread(to.0, to.1, m.feed, m.angle, rule));
         }
-        self.move_to(Move::rapid(short.0, short.1, rule));
-        self.move_to(Move::rapid(a.0, a.1, rule));
+        self.move_to(Move::rapid(r.short.0, r.short.1, rule));
+        self.move_to(Move::rapid(r.end.0, r.end.1, rule));
         self.stop(StopReason::FeedHold, rule);
         // The rest of the cut is read now, for the repeat.
         self.src.drain(core);
