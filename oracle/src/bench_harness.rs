@@ -10,11 +10,10 @@
 //! executions from the committed seeds; its rate is executions over the process's wall time.
 
 use crate::candidate::{CandidateEngine, Limits};
-use crate::certify::{self, cases::Cases};
+use crate::certify::{self, cases::{Ahead, Cases}};
 use crate::engine::{Engine, ImplEngine, SpecEngine};
 use crate::fuzzing::{decoded, seeds::encode, CycleInput, Target};
 use crate::judge::judge;
-use std::collections::VecDeque;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
@@ -48,16 +47,8 @@ impl Rate {
 /// engine `lookahead` cases ahead.
 pub fn campaign(engine: &dyn Engine, options: &certify::Options, lookahead: usize) -> Rate {
     let started = Instant::now();
-    let mut cases = Cases::new(options);
-    let mut ahead = VecDeque::new();
     let (mut n, mut bad) = (0, 0);
-    loop {
-        while ahead.len() <= lookahead {
-            let Some(p) = cases.next() else { break };
-            engine.prefetch(&p.program, &p.config);
-            ahead.push_back(p);
-        }
-        let Some(p) = ahead.pop_front() else { break };
+    for p in Ahead::new(Cases::new(options), engine, lookahead) {
         n += 1;
         bad += u64::from(!judge(&SpecEngine, engine, &p.program, &p.config).result.conforms());
     }

@@ -6,11 +6,12 @@
 use super::shard::Shard;
 use super::{Options, Origin};
 use crate::corpus;
-use crate::engine::SpecEngine;
+use crate::engine::{Engine, SpecEngine};
 use crate::gen::{self, Case};
 use crate::judge::observe;
 use crate::registry::{self, FAMILIES};
 use cycle_vocab::Config;
+use std::collections::VecDeque;
 use proptest::strategy::{BoxedStrategy, Strategy, ValueTree};
 use proptest::test_runner::{Config as ProptestConfig, RngAlgorithm, TestRng, TestRunner};
 
@@ -152,6 +153,39 @@ impl Iterator for Cases<'_> {
 
     fn next(&mut self) -> Option<Pending> {
         self.next_corpus().or_else(|| self.next_generated())
+    }
+}
+
+/// The cases drawn `lookahead` ahead of the one judged, each told to `engine` as it is drawn
+/// ([`Engine::prefetch`]), so that a candidate's child computes while the caller judges.
+pub struct Ahead<'o, 'e> {
+    pub cases: Cases<'o>,
+    engine: &'e dyn Engine,
+    queue: VecDeque<Pending>,
+    lookahead: usize,
+}
+
+impl<'o, 'e> Ahead<'o, 'e> {
+    pub fn new(cases: Cases<'o>, engine: &'e dyn Engine, lookahead: usize) -> Ahead<'o, 'e> {
+        Ahead { cases, engine, queue: VecDeque::new(), lookahead }
+    }
+
+    /// Cases drawn but not yet handed out.
+    pub fn waiting(&self) -> usize {
+        self.queue.len()
+    }
+}
+
+impl Iterator for Ahead<'_, '_> {
+    type Item = Pending;
+
+    fn next(&mut self) -> Option<Pending> {
+        while self.queue.len() <= self.lookahead {
+            let Some(p) = self.cases.next() else { break };
+            self.engine.prefetch(&p.program, &p.config);
+            self.queue.push_back(p);
+        }
+        self.queue.pop_front()
     }
 }
 

@@ -372,25 +372,18 @@ pub fn run_engine(
 ) -> Result<Run, Error> {
     let started = Instant::now();
     let identity = identity::Identity::capture(argv.as_deref());
-    let mut cases = cases::Cases::new(options);
     let (mut tally, mut corpus, mut failures, mut groups) = (tally::Tally::default(), Vec::new(), Vec::new(), Vec::new());
     let (mut consecutive, mut stopped) = (0u32, None);
     let write_error = |e: std::io::Error| Error(format!("cannot write cases.jsonl: {e}"));
     // An external candidate is told the next cases ahead, so its child computes while this
     // judges (a run stopped early has drawn those cases too).
     let lookahead = if argv.is_some() { crate::candidate::WINDOW } else { 0 };
-    let mut ahead = std::collections::VecDeque::new();
-    loop {
-        while ahead.len() <= lookahead {
-            let Some(p) = cases.next() else { break };
-            engine.prefetch(&p.program, &p.config);
-            ahead.push_back(p);
-        }
-        let Some(p) = ahead.pop_front() else { break };
+    let mut cases = cases::Ahead::new(cases::Cases::new(options), engine, lookahead);
+    while let Some(p) = cases.next() {
         let in_corpus = matches!(p.origin, Origin::Corpus { .. });
         if tally.cases % 8 == 0 {
             let phase = if in_corpus { "corpus" } else { "generated" };
-            progress(Progress { phase, done: cases.drawn - ahead.len() - 1, total: cases.total, bad: tally.cases - tally.conform });
+            progress(Progress { phase, done: cases.cases.drawn - cases.waiting() - 1, total: cases.cases.total, bad: tally.cases - tally.conform });
         }
         let judged = if in_corpus { judge_keeping(&SpecEngine, engine, &p.program, &p.config) } else { judge(&SpecEngine, engine, &p.program, &p.config) };
         let record = CaseRecord::new(&p, judged);
@@ -405,13 +398,13 @@ pub fn run_engine(
             corpus.push(record);
         }
         if options.max_failures > 0 && consecutive >= options.max_failures {
-            stopped = Some(Stopped { consecutive_failures: consecutive, judged: tally.cases, planned: cases.total });
+            stopped = Some(Stopped { consecutive_failures: consecutive, judged: tally.cases, planned: cases.cases.total });
             break;
         }
     }
     cases_out.flush().map_err(write_error)?;
     let bad = tally.cases - tally.conform;
-    progress(Progress { phase: "generated", done: cases.total, total: cases.total, bad });
+    progress(Progress { phase: "generated", done: cases.cases.total, total: cases.cases.total, bad });
     minimize::minimize_groups(engine, &mut groups, &mut |done, total| progress(Progress { phase: "minimizing", done, total, bad }));
     Ok(Run {
         options: options.clone(),
@@ -422,7 +415,7 @@ pub fn run_engine(
         tally,
         corpus,
         failures,
-        families: cases.runs,
+        families: cases.cases.runs,
         groups,
         stopped,
         proofs: match options.shard {
