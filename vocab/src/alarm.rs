@@ -38,7 +38,8 @@ pub enum AlarmCode {
     TooManyPasses,
     /// A documented feature this reference does not model.
     Unsupported,
-    /// A sequence number a cycle's P or Q names is not where the cycle needs it (CNT.FIND).
+    /// A sequence number a cycle's P or Q names is not where the cycle needs it (CNT.FIND), or
+    /// the subprogram an M98 names is not in the program text (SUB.FIND).
     BlockNotFound,
     /// A cycle's contour has more blocks than the documented bound (CNT.MAX).
     ContourTooLong,
@@ -46,6 +47,8 @@ pub enum AlarmCode {
     /// does not model operator events for (OP.SCOPE), at an event that is not a move (OP.AT),
     /// or never reached (OP.REACH).
     Operator,
+    /// A subprogram call nested deeper than the documented bound (SUB.NEST).
+    Nesting,
 }
 
 impl AlarmCode {
@@ -69,6 +72,7 @@ impl AlarmCode {
             AlarmCode::Unsupported => 3003,
             AlarmCode::ContourTooLong => 3004,
             AlarmCode::Operator => 3005,
+            AlarmCode::Nesting => 3006,
         }
     }
 
@@ -92,6 +96,7 @@ impl AlarmCode {
             AlarmCode::BlockNotFound => "sequence number not found where the cycle needs it",
             AlarmCode::ContourTooLong => "contour longer than the supported number of blocks",
             AlarmCode::Operator => "operator event not applicable here",
+            AlarmCode::Nesting => "subprogram calls nested too deep",
         }
     }
 }

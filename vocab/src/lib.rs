@@ -16,6 +16,7 @@
 pub mod alarm;
 pub mod operator;
 pub mod params;
+pub mod readings;
 pub mod rule;
 pub mod trace;
 pub mod units;
@@ -25,6 +26,7 @@ pub mod text;
 
 pub use alarm::{Alarm, AlarmCode};
 pub use params::{Config, Dialect, Params};
+pub use readings::Readings;
 pub use rule::Rule;
 pub use operator::{Action, Along, Script};
 pub use trace::{Button, Dwell, Event, Move, MoveKind, Pass, PassKind, Press, Resume, Spindle, SpindleState, Stop, StopReason};

@@ -6,6 +6,7 @@
 //! default or range in one of them shows as a divergence instead of being shared by both.
 
 use crate::operator::Script;
+use crate::readings::Readings;
 use crate::units::{Grid, Increment, Units};
 
 /// Input conventions (PRJ.DIALECT).
@@ -104,6 +105,9 @@ pub struct Config {
     /// Operator events while the program runs (OP.SCRIPT); empty: uninterrupted.
     #[cfg_attr(feature = "std", serde(default, skip_serializing_if = "Script::is_empty"))]
     pub operator: Script,
+    /// The declared readings (docs/INTERPRETATION.md, "Declared readings"); default: the letter.
+    #[cfg_attr(feature = "std", serde(default, skip_serializing_if = "Readings::is_letter"))]
+    pub readings: Readings,
 }
 
 impl Default for Config {
@@ -115,6 +119,7 @@ impl Default for Config {
             start_x: 0,
             start_z: 0,
             operator: Script::EMPTY,
+            readings: Readings::default(),
         }
     }
 }
