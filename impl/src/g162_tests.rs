@@ -477,6 +477,7 @@ fn no_panic_on_random_g162_and_thread_moves() {
             start_x: if r & 16 == 0 { 0 } else { extremes[(r >> 16) as usize % extremes.len()] },
             start_z: if r & 32 == 0 { 0 } else { extremes[(r >> 24) as usize % extremes.len()] },
             operator: cycle_vocab::Script::EMPTY,
+            readings: cycle_vocab::Readings::default(),
         };
         let mut buf = [0u8; 96];
         if round % 3 == 0 {

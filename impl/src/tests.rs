@@ -557,6 +557,7 @@ fn no_panic_on_random_input() {
             start_x: if r & 8 == 0 { 0 } else { extremes[(r >> 8) as usize % extremes.len()] },
             start_z: if r & 16 == 0 { 0 } else { extremes[(r >> 16) as usize % extremes.len()] },
             operator: cycle_vocab::Script::EMPTY,
+            readings: cycle_vocab::Readings::default(),
         };
         let mut buf = [0u8; 96];
         let soup = round % 2 == 0;
