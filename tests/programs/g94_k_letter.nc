@@ -1,4 +1,4 @@
-(G94 face taper under the letter, g94.k=end-minus-start, the default: K = end Z - cut start Z, so the cut starts at C.z = D.z - K; kept within the run)
+(G94 face taper under the letter g94.k=end-minus-start, the default: K = end Z - cut start Z, so the cut starts at C.z = D.z - K; kept within the run)
 G0 X50 Z2;
 G94 X20 Z-5 K-2 F0.2; (the register's example: the cut starts at Z-3)
 Z-8; (K-2 kept: the cut starts at Z-6)
