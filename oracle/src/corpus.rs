@@ -10,11 +10,13 @@
 //!
 //! Configurations follow the files' header comments: `f76_ex1_microns` runs under the `fanuc`
 //! dialect (F76.MICRONS), the G162 programs under `nc201` (M004), the `*_inch` programs in inch
-//! units (they write G20), the rest under the defaults (gsk, metric, ISB, start X0 Z0). The G78 example as printed has infeed mode 05,
+//! units (they write G20), a program whose header names `--reading NAME=VALUE` or `--param N=V`
+//! under that declared reading or parameter (e.g. `g94_taper` under `g94.k=start-minus-end`), the
+//! rest under the defaults (gsk, metric, ISB, start X0 Z0, the manuals' letter). The G78 example as printed has infeed mode 05,
 //! outside 0…4: its expected result is that alarm (G78.MODE), and an engine that raises it
 //! conforms.
 
-use cycle_vocab::{AlarmCode, Config, Dialect, Grid, Increment, Rule, Units};
+use cycle_vocab::{AlarmCode, Config, Dialect, Grid, Increment, Params, Readings, Rule, Units};
 
 /// An alarm a corpus program is expected to end in: code, word, rule.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -41,21 +43,36 @@ pub struct Program {
     pub rules: &'static [Rule],
     /// `Some` when the program is expected to end in this alarm.
     pub expect_alarm: Option<ExpectedAlarm>,
+    /// Declared readings other than the letter, as `--reading NAME=VALUE` writes them.
+    pub readings: &'static [(&'static str, &'static str)],
+    /// Parameters set, as `--param N=V` writes them.
+    pub params: &'static [(&'static str, i64)],
 }
 
 impl Program {
-    /// The configuration the program runs under.
+    /// The configuration the program runs under. The table's reading and parameter names are
+    /// checked by this module's tests; an unknown one is left unset here.
     pub fn config(&self) -> Config {
+        let mut readings = Readings::default();
+        for (name, value) in self.readings {
+            let _ = readings.set(name, value);
+        }
+        let mut params = Params::default();
+        for (name, value) in self.params {
+            let _ = params.set(name, *value);
+        }
         Config {
             dialect: self.dialect,
             grid: Grid { units: self.units, increment: self.increment },
+            params,
+            readings,
             ..Config::default()
         }
     }
 }
 
 macro_rules! program {
-    ($dir:literal, $name:literal, $dialect:ident, $units:ident $(/ $increment:ident)?, [$($rule:ident),* $(,)?] $(, alarm $code:ident $word:literal $arule:ident)?) => {
+    ($dir:literal, $name:literal, $dialect:ident, $units:ident $(/ $increment:ident)?, [$($rule:ident),* $(,)?] $(, alarm $code:ident $word:literal $arule:ident)? $(, reading $rname:literal = $rvalue:literal)* $(, param $pname:literal = $pvalue:literal)*) => {
         Program {
             name: $name,
             path: concat!($dir, "/", $name, ".nc"),
@@ -65,6 +82,8 @@ macro_rules! program {
             increment: program!(@increment $($increment)?),
             rules: &[$(Rule::$rule),*],
             expect_alarm: program!(@alarm $($code $word $arule)?),
+            readings: &[$(($rname, $rvalue)),*],
+            params: &[$(($pname, $pvalue)),*],
         }
     };
     (@increment) => { Increment::Isb };
@@ -100,6 +119,8 @@ pub const PROGRAMS: &[Program] = &[
     program!("tests/programs", "g92_inch", Gsk, Inch, [ComUnits, ComLead, G92Format]),
     program!("tests/programs", "g92_multistart", Gsk, Metric, [ComMultiStart, G92Format, G92Modal]),
     program!("tests/programs", "g92_modal_pullout", Gsk, Metric, [G92Modal, G92Jk1, G92Jk3, G92Pullout, G92Taper, ComSide]),
+    program!("tests/programs", "g92_5131", Gsk, Metric, [G92Jk1, G92Pullout], param "5131" = 30),
+    program!("tests/programs", "g92_step3", Gsk, Metric, [G92Path, G92Pullout, G92Modal], alarm Geometry b'J' G92Path),
     program!("tests/programs", "g76_taper", Gsk, Metric, [G76Format, G76Pullout, G76InfeedX, ComPoints]),
     program!("tests/programs", "g76_internal", Gsk, Metric, [ComSide, G76InfeedX, G76InfeedZ]),
     program!("tests/programs", "g76_inch", Gsk, Inch, [ComUnits, ComLead]),
@@ -113,16 +134,23 @@ pub const PROGRAMS: &[Program] = &[
     program!("tests/programs", "g78_mode3", Gsk, Metric, [G78Mode, G78DepthMode]),
     program!("tests/programs", "g78_mode4", Gsk, Metric, [G78Mode, G78DepthMode]),
     program!("tests/programs", "g78_constant", Gsk, Metric, [G78DepthMode, G76DepthLast]),
+    program!("tests/programs", "g78_jk_modal", Gsk, Metric, [G78Pullout, G78Format]),
+    program!("tests/programs", "g78_zref", Gsk, Metric, [G78Mode, G76InfeedZ, G76FinishZ], reading "thread.zref" = "groove"),
+    program!("tests/programs", "f76_angle40", Fanuc, Metric, [F76Format, G76InfeedZ]),
     program!("tests/programs", "g162_straight", Nc201, Metric, [G162Pq, G162Split, G162V, G162Path, G162Retract]),
     program!("tests/programs", "g162_taper", Nc201, Metric, [G162W, G162A, G162F, G162V, G162Split]),
     program!("tests/programs", "g162_multistart", Nc201, Metric, [G162B, G162Pq]),
     program!("tests/programs", "g162_variable", Nc201, Metric, [G162I, G162J, G162Split]),
     program!("tests/programs", "g162_internal_g91", Nc201, Metric, [Nc201AbsInc, G162A, G162X, G162F, G162Retract]),
+    program!("tests/programs", "g162_single_taper", Nc201, Metric, [G162X, G162W, G162Path]),
+    program!("tests/programs", "g162_steps", Nc201, Metric, [G162I, G162J, G162Split]),
+    program!("tests/programs", "g162_continuous", Nc201, Metric, [G162I, G162J], reading "g162.lead" = "continuous"),
     program!("tests/programs", "g32_g33_g34", Gsk, Metric, [G32, G33, G34, PrjModal]),
     program!("tests/programs", "g90_taper_signs", Gsk, Metric, [G90Taper, G90Path, G90Modal]),
     program!("tests/programs", "g90_modal_runs", Gsk, Metric, [G90Modal, G94Modal, G90Path]),
     program!("tests/programs", "g90_inch", Gsk, Inch, [ComUnits, G90Format, G90Path]),
-    program!("tests/programs", "g94_taper", Gsk, Metric, [G94Taper, G94Path, G94Modal]),
+    program!("tests/programs", "g94_taper", Gsk, Metric, [G94Taper, G94Path, G94Modal], reading "g94.k" = "start-minus-end"),
+    program!("tests/programs", "g94_k_letter", Gsk, Metric, [G94Taper, G94Path, G94Modal]),
     program!("tests/programs", "g71_bore", Gsk, Metric, [G71Layer, G71Allow, G71Monotone, G71Lastpass]),
     program!("tests/programs", "g70_arcs_ik", Gsk, Metric, [ArcIk, ArcDir, G70Path, G70Feed, CntFlow]),
     program!("tests/programs", "g71_vertex_on_layer", Gsk, Metric, [G71Layer, G71Lastpass]),
@@ -132,11 +160,14 @@ pub const PROGRAMS: &[Program] = &[
     program!("tests/programs", "g71_isc", Gsk, Metric / Isc, [ComUnits, G71Layer, ArcR, G71Allow]),
     program!("tests/programs", "g73_d1", Gsk, Metric, [G73Count, G73Depth, G73Path, ArcR]),
     program!("tests/programs", "g73_both_formats", Gsk, Metric, [G73Format, G73Uw, G73Escape, G73Count, G73Path, ArcIk]),
+    program!("tests/programs", "g73_point_c", Gsk, Metric, [G73Path, G73Escape, G73Depth]),
+    program!("tests/programs", "g73_skip_c", Gsk, Metric, [G73Path, G73Depth], reading "g73.c" = "skip"),
     program!("tests/programs", "g74_one_peck", Gsk, Metric, [G74Peck, G74E]),
     program!("tests/programs", "g74_last_increment", Gsk, Metric, [G74Peck, G74E]),
     program!("tests/programs", "g74_columns", Gsk, Metric, [G74Column, G74Relief, G74Peck]),
     program!("tests/programs", "g75_single_groove", Gsk, Metric, [G75Format, G75Peck]),
     program!("tests/programs", "g75_relief", Gsk, Metric, [G75Column, G75Relief, G75Peck]),
+    program!("tests/programs", "g75_relief_against_step", Gsk, Metric, [G75Relief, G75Column], reading "g75.relief" = "against-step"),
     program!("tests/programs", "g83_edges", Gsk, Metric, [G83Peck, G83Format]),
     program!("tests/programs", "g84_g99", Gsk, Metric, [G84Path, G84Format, G80]),
 ];
@@ -185,6 +216,16 @@ mod tests {
             assert_eq!(header.contains("--units inch"), p.units == Units::Inch, "{}", p.name);
             assert_eq!(header.contains("--increment isc"), p.increment == Increment::Isc, "{}", p.name);
             assert!(!p.rules.is_empty(), "{} illustrates no rule", p.name);
+            assert_eq!(header.matches("--reading ").count(), p.readings.len(), "{}", p.name);
+            for (name, value) in p.readings {
+                assert!(header.contains(&format!("--reading {name}={value}")), "{}: --reading {name}={value}", p.name);
+                assert!(Readings::default().set(name, value).is_ok(), "{}: {name}={value} is no reading", p.name);
+            }
+            assert_eq!(header.matches("--param ").count(), p.params.len(), "{}", p.name);
+            for (name, value) in p.params {
+                assert!(header.contains(&format!("--param {name}={value}")), "{}: --param {name}={value}", p.name);
+                assert!(Params::default().set(name, *value).is_ok(), "{}: {name} is no parameter", p.name);
+            }
         }
     }
 

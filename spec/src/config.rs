@@ -137,7 +137,7 @@ fn within(v: i64, lo: i64, hi: i64, word: Option<u8>, rule: Rule) -> Result<(), 
 /// Checks, in this order: the start point (|X|, |Z| ≤ N: COM.RANGES, word X / Z), No.19
 /// (G92.JK.1), No.0018 bit 6 (G92.HOLD), 5130 and 5131 (G76.PULLOUT), 5140, 5141, 5142, 5143
 /// (G76.DEFAULTS), 5144 (G78.MODE), 5145 (G78.DEPTHMODE), `max_passes` (PRJ.MAXPASS), under
-/// `fanuc` 5143 ∈ {80, 60, 55, 30, 29, 0} (F76.FORMAT), `x_radius` ≤ 1 (NC201.XMODE, every
+/// `fanuc` 5143 ∈ {80, 60, 55, 40, 30, 29, 0} (F76.FORMAT), `x_radius` ≤ 1 (NC201.XMODE, every
 /// dialect), 5132 in 1…N and 5133 in 0…N (G71.PARAM), `arc_tolerance` in 0…N (ARC.TOL),
 /// `nose_radius` in 0…N (TNRC.RADIUS), 5135 and 5136 in −N…N (G73.ESCAPE), 5137 in 1…1 000 000
 /// (G73.COUNT), 5139 in 0…N (G74.E), then the operator script (OP.SCRIPT). An illegal value is `OUT OF RANGE` on line 0 (the configuration). No.107 is legal in

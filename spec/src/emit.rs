@@ -160,12 +160,14 @@ impl Out<'_> {
 }
 
 /// A variable lead (G34, G162.I, docs/INTERPRETATION.md "Trace"): `change` lead counts per
-/// `change_angle` (0.001°), held once a shrinking lead is ≤ `floor` (0: none). All 0: constant.
+/// `change_angle` (0.001°), held once a shrinking lead is ≤ `floor` (0: none); continuous, or in
+/// steps when `stepped` ("Stepped lead": G162 under `g162.lead=steps`). All 0: constant.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct LeadLaw {
     pub change: i64,
     pub change_angle: u32,
     pub floor: i64,
+    pub stepped: bool,
 }
 
 impl Out<'_> {
@@ -174,7 +176,8 @@ impl Out<'_> {
     pub fn variable_thread(&mut self, x: i128, z: i128, lead: i64, angle: u32, law: LeadLaw, rule: Rule, line: u32) -> Result<(), Alarm> {
         let x = coordinate(x, b'X', line)?;
         let z = coordinate(z, b'Z', line)?;
-        self.push(Move::variable_thread(x, z, lead, angle, law.change, law.change_angle, law.floor, rule));
+        let m = Move::variable_thread(x, z, lead, angle, law.change, law.change_angle, law.floor, rule);
+        self.push(if law.stepped { m.stepped() } else { m });
         Ok(())
     }
 }

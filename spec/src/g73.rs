@@ -15,6 +15,7 @@ use crate::exact::round_div;
 use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
 use crate::g70::{P, Q};
 use crate::words::{alarm, Read, F, N, U, W};
+use cycle_vocab::readings::G73C;
 use cycle_vocab::{Alarm, AlarmCode, Dialect, PassKind, Rule};
 
 /// G73 as a family of the interpreter: the values its last first block gave.
@@ -110,6 +111,8 @@ struct Cycle {
     du: i64,
     dw: i64,
     feed: i64,
+    /// The declared reading `g73.c`: whether roughing first retreats to C.
+    c: G73C,
     line: u32,
 }
 
@@ -146,7 +149,8 @@ fn cycle(kept: Kept, format_b: bool, st: &mut State, b: &BlockIn, src: &mut Sour
     }
     let du = v.get(b'U').unwrap_or(0);
     let dw = v.get(b'W').unwrap_or(0);
-    emit(&Cycle { a, contour, di, dk, d, du, dw, feed, line }, &mut st.out)
+    let c = st.config.readings.g73_c;
+    emit(&Cycle { a, contour, di, dk, d, du, dw, feed, c, line }, &mut st.out)
 }
 
 /// G73.DEPTH (M003, OPEN): pass n's escape left, "round(Δi·(d − n)/d)" (radius counts) and
@@ -162,12 +166,24 @@ fn offset(cy: &Cycle, n: i64) -> (i128, i128) {
     (2 * escape(cy.di, cy.d, n) + i128::from(cy.du), escape(cy.dk, cy.d, n) + i128::from(cy.dw))
 }
 
-/// G73.PATH (M003, OPEN): "Pass header (index n, kind ROUGH, diameter_depth = |2·round(Δi·(d −
+/// G73 point C (declared reading `g73.c`; `003_…` line 123: "粗加工时刀具从A点后退至C点，后退距离分别
+/// 为Δi+Δu/2，Δk+Δw"): C = (A.x + 2·Δi + Δu, A.z + Δk + Δw), diameter count, every word with its
+/// sign.
+fn point_c(cy: &Cycle) -> Point {
+    (cy.a.0 + 2 * i128::from(cy.di) + i128::from(cy.du), cy.a.1 + i128::from(cy.dk) + i128::from(cy.dw))
+}
+
+/// G73.PATH (M003, OPEN): under `g73.c=visit` (the letter) one rapid A → C before pass 1's
+/// header (not emitted when C = A, PRJ.NOOP); `skip`: none. Then for each pass: "Pass header (index n, kind ROUGH, diameter_depth = |2·round(Δi·(d −
 /// n)/d)|, rule G73.DEPTH); one rapid from the current position to A + T_n (G73.PATH); then
 /// the contour translated by T_n, block by block in each block's own mode …; arcs about
 /// translated centres …. After pass d, one rapid to A (G73.PATH)."
 fn emit(cy: &Cycle, out: &mut Out) -> Result<(), Alarm> {
     let (a, line) = (cy.a, cy.line);
+    if cy.c == G73C::Visit {
+        let c = point_c(cy);
+        out.rapid(c.0, c.1, Rule::G73Path, line)?;
+    }
     for n in 1..=cy.d {
         let (tx, tz) = offset(cy, n);
         let depth = (2 * escape(cy.di, cy.d, n)).abs();

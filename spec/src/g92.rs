@@ -10,6 +10,7 @@ use crate::emit::{start_angle, Out};
 use crate::exact::round_div;
 use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
 use crate::pullout::{self, Amounts, ThreadLine};
+use crate::tangent::round_mul_tan_degrees;
 use crate::words::{alarm, Read, F, I_TPI, JK_MAX, N, U, W, X, Z};
 use cycle_vocab::{Alarm, AlarmCode, Dialect, Grid, PassKind, Rule};
 
@@ -140,13 +141,21 @@ pub fn no19_amount(no19: u32, lead: i64, grid: Grid) -> i128 {
     round_div(no19 as i128 * lead as i128, 10 * grid.lead_counts_per_increment() as i128)
 }
 
-/// G92.JK.1–G92.JK.7 (M002) as one function of J, K (absolute values, JK.7) and the No.19
-/// amount c. Returns the resolved (J, K) and the rule that decided them, or `None` for no
-/// pull-out.
+/// No.5131 for G92 (`000_…` line 79, `001_…` line 62: 5131 is the thread chamfer angle of G76,
+/// G78 and G92): the short-axis amount of G92.JK.1, round(c·tan(5131°)), with the exact tangent
+/// of G76.PULLOUT; 45° (the default) gives c itself.
+pub fn jk1_short(c: i128, angle_5131: u32) -> i128 {
+    let c = i64::try_from(c).unwrap_or(i64::MAX);
+    round_mul_tan_degrees(c, angle_5131).unwrap_or(0) as i128
+}
+
+/// G92.JK.1–G92.JK.7 (M002) as one function of J, K (absolute values, JK.7), the No.19 amount c
+/// and `c_short`, JK.1's short-axis amount ([`jk1_short`]). Returns the resolved (J, K) and the
+/// rule that decided them, or `None` for no pull-out.
 ///
 /// | J | K | result | rule |
 /// |---|---|---|---|
-/// | – | – | (c, c) | JK.1 |
+/// | – | – | (c_short, c) | JK.1 (No.5131) |
 /// | – | K | (c, K); K = 0 → (c, c) | JK.2 |
 /// | 0 | any | none | JK.4 / JK.6 |
 /// | J | – | (J, J) | JK.3 |
@@ -154,11 +163,11 @@ pub fn no19_amount(no19: u32, lead: i64, grid: Grid) -> i128 {
 /// | J | K | (J, K) | PULLOUT |
 ///
 /// A resolved amount of 0 means no pull-out.
-pub fn resolve_jk(j: Option<i64>, k: Option<i64>, c: i128) -> Option<(Amounts, Rule)> {
+pub fn resolve_jk(j: Option<i64>, k: Option<i64>, c: i128, c_short: i128) -> Option<(Amounts, Rule)> {
     let j = j.map(|v| v.unsigned_abs() as i128);
     let k = k.map(|v| v.unsigned_abs() as i128);
     let (amounts, rule) = match (j, k) {
-        (None, None) => (Amounts { j: c, k: c }, Rule::G92Jk1),
+        (None, None) => (Amounts { j: c_short, k: c }, Rule::G92Jk1),
         (None, Some(0)) => (Amounts { j: c, k: c }, Rule::G92Jk2),
         (None, Some(k)) => (Amounts { j: c, k }, Rule::G92Jk2),
         (Some(0), None) | (Some(0), Some(0)) => return None, // G92.JK.4
@@ -174,7 +183,22 @@ pub fn resolve_jk(j: Option<i64>, k: Option<i64>, c: i128) -> Option<(Amounts, R
     }
 }
 
-/// Checks the cycle (in the register's order) and emits it (G92.PATH).
+/// G92.PATH — step ③ opposite to ① (DEPARTS, `002_…` line 55: ③ retracts X "与①方向相反" and
+/// returns to the start's X). The X where ③ begins, `x3` (the pull-out's end, or D.x without
+/// one), must not lie beyond A.x on the side s: s·(A.x − X₃) < 0 has no move that does both.
+/// Refused as `GEOMETRY` on J when the pull-out's short-axis move carried X there (D.x itself
+/// is not beyond A.x), else on X. X₃ = A.x is legal (③ no move).
+pub fn step3_ok(a_x: i128, d_x: i128, x3: i128, s: i128, line: u32) -> Result<(), Alarm> {
+    if s * (a_x - x3) >= 0 {
+        return Ok(());
+    }
+    let word = if s * (a_x - d_x) >= 0 { b'J' } else { b'X' };
+    Err(alarm(AlarmCode::Geometry, word, Rule::G92Path, line))
+}
+
+/// Checks the cycle in the register's order — W (G92.FORMAT), the taper (G92.TAPER), the side
+/// (COM.SIDE), No.19, the pull-out amounts, No.107 (G92.JK.8), K against the long axis
+/// (G92.PULLOUT), the pass bound (PRJ.MAXPASS), step ③ (G92.PATH) — and emits it (G92.PATH).
 pub fn expand(c: &G92Cycle, params: &Params, grid: Grid, out: &mut Out) -> Result<(), Alarm> {
     let line = c.line;
     let (ax, az) = c.a;
@@ -200,7 +224,7 @@ pub fn expand(c: &G92Cycle, params: &Params, grid: Grid, out: &mut Out) -> Resul
         return Err(Alarm::new(AlarmCode::OutOfRange, None, Rule::G92Jk1, line));
     }
     let amount = no19_amount(params.no19_pullout as u32, c.lead, grid);
-    let pull = resolve_jk(c.j, c.k, amount);
+    let pull = resolve_jk(c.j, c.k, amount, jk1_short(amount, params.p5131_chamfer_angle as u32));
     // G92.JK.8: only No.107 = 0 is modelled.
     if params.no107_pullout_speed != 0 {
         return Err(Alarm::new(AlarmCode::Unsupported, None, Rule::G92Jk8, line));
@@ -216,6 +240,9 @@ pub fn expand(c: &G92Cycle, params: &Params, grid: Grid, out: &mut Out) -> Resul
     };
     // PRJ.MAXPASS: one pass × L starts.
     crate::multipass::check_max_passes(1, c.l as u128, params, b'L', line)?;
+    // G92.PATH step ③ (DEPARTS): the last check, before any motion.
+    let x3 = segment.map_or(dx, |((_, end), _)| end.0);
+    step3_ok(ax, dx, x3, s, line)?;
 
     // PRJ.TRACE: one pass, depth = |A.x − C.x| (the X infeed of step ①). Each start is a cut
     // (G92.HOLD), the first one from the pass header on.
@@ -248,16 +275,44 @@ mod tests {
 
     #[test]
     fn jk_table() {
-        let c = 30;
-        assert_eq!(resolve_jk(None, None, c), Some((Amounts { j: 30, k: 30 }, Rule::G92Jk1)));
-        assert_eq!(resolve_jk(None, Some(-5), c), Some((Amounts { j: 30, k: 5 }, Rule::G92Jk2)));
-        assert_eq!(resolve_jk(None, Some(0), c), Some((Amounts { j: 30, k: 30 }, Rule::G92Jk2)));
-        assert_eq!(resolve_jk(Some(0), None, c), None);
-        assert_eq!(resolve_jk(Some(0), Some(7), c), None);
-        assert_eq!(resolve_jk(Some(-4), None, c), Some((Amounts { j: 4, k: 4 }, Rule::G92Jk3)));
-        assert_eq!(resolve_jk(Some(4), Some(0), c), Some((Amounts { j: 4, k: 4 }, Rule::G92Jk5)));
-        assert_eq!(resolve_jk(Some(4), Some(9), c), Some((Amounts { j: 4, k: 9 }, Rule::G92Pullout)));
-        assert_eq!(resolve_jk(None, None, 0), None);
+        let (c, cs) = (30, 17);
+        assert_eq!(resolve_jk(None, None, c, cs), Some((Amounts { j: 17, k: 30 }, Rule::G92Jk1)));
+        assert_eq!(resolve_jk(None, Some(-5), c, cs), Some((Amounts { j: 30, k: 5 }, Rule::G92Jk2)));
+        assert_eq!(resolve_jk(None, Some(0), c, cs), Some((Amounts { j: 30, k: 30 }, Rule::G92Jk2)));
+        assert_eq!(resolve_jk(Some(0), None, c, cs), None);
+        assert_eq!(resolve_jk(Some(0), Some(7), c, cs), None);
+        assert_eq!(resolve_jk(Some(-4), None, c, cs), Some((Amounts { j: 4, k: 4 }, Rule::G92Jk3)));
+        assert_eq!(resolve_jk(Some(4), Some(0), c, cs), Some((Amounts { j: 4, k: 4 }, Rule::G92Jk5)));
+        assert_eq!(resolve_jk(Some(4), Some(9), c, cs), Some((Amounts { j: 4, k: 9 }, Rule::G92Pullout)));
+        assert_eq!(resolve_jk(None, None, 0, 0), None);
+        assert_eq!(resolve_jk(None, None, 30, 0), None); // J rounds to 0: no pull-out
+    }
+
+    /// No.5131 for G92: J = round(c·tan 5131°); 45° (the default) keeps J = c.
+    #[test]
+    fn jk1_short_axis_follows_5131() {
+        assert_eq!(jk1_short(3_000, 45), 3_000);
+        assert_eq!(jk1_short(3_000, 30), 1_732); // 1732.05
+        assert_eq!(jk1_short(3_000, 60), 5_196); // 5196.15
+        assert_eq!(jk1_short(3_000, 1), 52); // 52.36
+        assert_eq!(jk1_short(0, 30), 0);
+        assert_eq!(crate::config::DEFAULTS.p5131_chamfer_angle, 45);
+    }
+
+    /// G92.PATH step ③: X₃ beyond A.x on the side s is refused, on J when the pull-out took X
+    /// there, else on X; X₃ = A.x is legal.
+    #[test]
+    fn step3_opposite_to_step1() {
+        let geometry = |w| Err(alarm(AlarmCode::Geometry, w, Rule::G92Path, 1));
+        // G0 X65; G92 X58.7 … J5: the pull-out ends at X68.7 > 65.
+        assert_eq!(step3_ok(65_000, 58_700, 68_700, 1, 1), geometry(b'J'));
+        assert_eq!(step3_ok(65_000, 58_700, 65_000, 1, 1), Ok(()));
+        assert_eq!(step3_ok(65_000, 58_700, 64_700, 1, 1), Ok(()));
+        // Internal (s = −1): beyond is below A.x.
+        assert_eq!(step3_ok(20_000, 26_000, 18_000, -1, 1), geometry(b'J'));
+        assert_eq!(step3_ok(20_000, 26_000, 22_000, -1, 1), Ok(()));
+        // The thread end itself beyond A.x: on X.
+        assert_eq!(step3_ok(65_000, 66_000, 66_000, 1, 1), geometry(b'X'));
     }
 
     #[test]

@@ -10,6 +10,7 @@ use crate::emit::Out;
 use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
 use crate::single_cut::{taper_ok, Cut, Run};
 use crate::words::{alarm, Read, F, N, U, W, X, Z};
+use cycle_vocab::readings::G94K;
 use cycle_vocab::{Alarm, AlarmCode, Dialect, PassKind, Rule};
 
 /// G94 as a family of the interpreter: a motion mode with its run.
@@ -37,30 +38,36 @@ impl Family for G94 {
     }
     fn execute(&mut self, st: &mut State, b: &BlockIn, _: &mut Source) -> Result<(), Alarm> {
         match self.run.block(st, b, b'K')? {
-            Some(cut) => expand(&cut, &mut st.out),
+            Some(cut) => expand(&cut, st.config.readings.g94_k, &mut st.out),
             None => Ok(()),
         }
     }
 }
 
-/// G94.TAPER (M003): the Z of the cut start, C.z = D.z + K (K = start Z − end Z).
-pub fn cut_start_z(d_z: i128, k: i128) -> i128 {
-    d_z + k
+/// G94.TAPER (declared reading `g94.k`): the Z of the cut start. The letter, `end-minus-start`
+/// (`003_…` line 142: K is "端面切削始点至终点位移在Z方向的…增量值", the Z increment from the cut's
+/// start to its end): K = D.z − C.z, so C.z = D.z − K. `start-minus-end` (FANUC, ADTECH):
+/// C.z = D.z + K.
+pub fn cut_start_z(d_z: i128, k: i128, reading: G94K) -> i128 {
+    match reading {
+        G94K::EndMinusStart => d_z - k,
+        G94K::StartMinusEnd => d_z + k,
+    }
 }
 
 /// Checks one cycle in the register's order — U = 0 (`GEOMETRY` on X, G94.FORMAT), then the
-/// taper (|K| ≤ |W| when they differ in sign, else `GEOMETRY` on K, G94.TAPER) — and emits
-/// it: the pass header (index in the run, Z depth |A.z − C.z|, so 2·|A.z − C.z| on diameter),
-/// then G94.PATH.
-pub fn expand(c: &Cut, out: &mut Out) -> Result<(), Alarm> {
+/// taper on k = C.z − D.z under the reading in force (|k| ≤ |W| when they differ in sign, else
+/// `GEOMETRY` on K, G94.TAPER) — and emits it: the pass header (index in the run, Z depth
+/// |A.z − C.z|, so 2·|A.z − C.z| on diameter), then G94.PATH.
+pub fn expand(c: &Cut, reading: G94K, out: &mut Out) -> Result<(), Alarm> {
     let ((ax, az), (dx, dz), k, line) = (c.a, c.d, c.taper, c.line);
     if dx == ax {
         return Err(alarm(AlarmCode::Geometry, b'X', Rule::G94Format, line));
     }
-    if !taper_ok(k, dz - az) {
+    let cz = cut_start_z(dz, k, reading);
+    if !taper_ok(cz - dz, dz - az) {
         return Err(alarm(AlarmCode::Geometry, b'K', Rule::G94Taper, line));
     }
-    let cz = cut_start_z(dz, k);
     let approach = if k != 0 { Rule::G94Taper } else { Rule::G94Path };
     out.pass(c.index, PassKind::Rough, 2 * (az - cz).abs(), Rule::G94Path, line)?;
     out.rapid(ax, cz, approach, line)?; // ①
@@ -75,8 +82,15 @@ mod tests {
 
     #[test]
     fn cut_start_and_taper() {
-        assert_eq!(cut_start_z(-3_500, 0), -3_500);
-        assert_eq!(cut_start_z(-4_000, 2_000), -2_000); // K > 0: the cut starts above the end
+        for reading in [G94K::EndMinusStart, G94K::StartMinusEnd] {
+            assert_eq!(cut_start_z(-3_500, 0, reading), -3_500);
+        }
+        // `G94 X20 Z-5 K-2`: the letter starts the cut at Z−3, FANUC at Z−7.
+        assert_eq!(cut_start_z(-5_000, -2_000, G94K::EndMinusStart), -3_000);
+        assert_eq!(cut_start_z(-5_000, -2_000, G94K::StartMinusEnd), -7_000);
+        assert_eq!(cut_start_z(-4_000, 2_000, G94K::StartMinusEnd), -2_000); // K > 0: above the end
+        assert_eq!(cut_start_z(-4_000, 2_000, G94K::EndMinusStart), -6_000);
+        assert_eq!(G94K::default(), G94K::EndMinusStart); // the letter is the default
         // W = −6: K up to +6 against it, any K with it.
         assert!(taper_ok(6_000, -6_000));
         assert!(!taper_ok(6_001, -6_000));

@@ -13,6 +13,7 @@ use crate::emit::Out;
 use crate::family::{BlockIn, State, Words};
 use crate::stock_removal::{counts_per_length, half_units};
 use crate::words::{alarm, Read, F, N, U, W, X, Z};
+use cycle_vocab::readings::G75Relief;
 use cycle_vocab::{Alarm, AlarmCode, PassKind, Rule};
 
 /// Which of the two cycles: its axes, words and rules.
@@ -121,8 +122,10 @@ struct Cycle {
     step: i128,
     /// The return after a peck along p: G74 e, G75 2e.
     back: i128,
-    /// The relief along q at a column's bottom: G74 2Δd, G75 Δd.
+    /// The relief along q at a column's bottom: G74 2Δd, G75 Δd (magnitude).
     relief: i128,
+    /// Its direction on q (−1, +1; 0 with no step travel): [`relief_direction`].
+    relief_dir: i128,
     feed: i64,
     line: u32,
 }
@@ -150,6 +153,7 @@ pub fn second_block(ax: Axes, e: Option<i64>, st: &mut State, b: &BlockIn) -> Re
         step: length(step_word, q_letter),
         back: i128::from(e.unwrap_or(params.p5139_peck_return)) * counts_per_length(p_letter),
         relief: length(b'R', q_letter),
+        relief_dir: relief_direction(ax, (ax.q(end) - ax.q(a)).signum(), st.config.readings.g75_relief),
         feed,
         line,
     };
@@ -181,6 +185,17 @@ fn check(cy: &Cycle) -> Result<(), Alarm> {
         return Err(alarm(AlarmCode::MissingWord, step_word, r.column, line));
     }
     Ok(())
+}
+
+/// The direction of the relief on the step axis, σ being the step direction (sign of E.q − A.q).
+/// G74.RELIEF (OPEN): "against the step (−σ·2Δd …)". G75.RELIEF (declared reading `g75.relief`;
+/// `003_…` line 143: "在槽底沿-Z方向的退刀量"): the letter `minus-z`, toward −Z whatever σ;
+/// `against-step`, −σ as FANUC/ADTECH draw it.
+pub fn relief_direction(ax: Axes, sigma: i128, reading: G75Relief) -> i128 {
+    match (ax, reading) {
+        (Axes::G75, G75Relief::MinusZ) => -1,
+        (Axes::G74, _) | (Axes::G75, G75Relief::AgainstStep) => -sigma,
+    }
 }
 
 /// The number of pecks in one column: ⌈|E.p − A.p| / peck⌉.
@@ -219,7 +234,6 @@ fn emit(cy: &Cycle, out: &mut Out) -> Result<(), Alarm> {
     let (ax, a, line, r) = (cy.ax, cy.a, cy.line, cy.ax.rules());
     let (p_letter, _) = ax.letters();
     let depth = (ax.p(cy.e) - ax.p(a)).abs() * half_units(p_letter);
-    let sigma = (ax.q(cy.e) - ax.q(a)).signum();
     let columns = core::iter::once(ax.q(a)).chain(stops(ax.q(a), ax.q(cy.e), cy.step));
     let mut j: u32 = 0;
     for q in columns {
@@ -234,8 +248,9 @@ fn emit(cy: &Cycle, out: &mut Out) -> Result<(), Alarm> {
         pecks_of_column(cy, q, out)?;
         let mut at_q = q;
         if j > 1 {
-            // G74.RELIEF: "a rapid by Δd in X against the step (−σ·2Δd …)"; G75 "−σ·Δd" in Z.
-            at_q = q - sigma * cy.relief;
+            // G74.RELIEF: "a rapid by Δd in X against the step (−σ·2Δd …)"; G75.RELIEF by Δd in Z,
+            // the way `relief_direction` says.
+            at_q = q + cy.relief_dir * cy.relief;
             let bottom = ax.point(ax.p(cy.e), at_q);
             out.rapid(bottom.0, bottom.1, r.relief, line)?;
         }
@@ -268,7 +283,22 @@ fn pecks_of_column(cy: &Cycle, q: i128, out: &mut Out) -> Result<(), Alarm> {
 
 #[cfg(test)]
 mod tests {
-    use super::stops;
+    use super::{relief_direction, stops, Axes};
+    use cycle_vocab::readings::G75Relief;
+
+    /// G75.RELIEF: −Z under the letter whatever the step; against the step under
+    /// `against-step`; G74 against the step under either reading.
+    #[test]
+    fn relief_directions() {
+        for sigma in [-1, 1] {
+            assert_eq!(relief_direction(Axes::G75, sigma, G75Relief::MinusZ), -1);
+            assert_eq!(relief_direction(Axes::G75, sigma, G75Relief::AgainstStep), -sigma);
+            for reading in [G75Relief::MinusZ, G75Relief::AgainstStep] {
+                assert_eq!(relief_direction(Axes::G74, sigma, reading), -sigma);
+            }
+        }
+        assert_eq!(G75Relief::default(), G75Relief::MinusZ);
+    }
 
     #[test]
     fn stops_end_exactly_at_the_end() {

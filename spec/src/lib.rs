@@ -148,4 +148,6 @@ mod tests_operator_cycles;
 #[cfg(test)]
 mod tests_props;
 #[cfg(test)]
+mod tests_threads_a;
+#[cfg(test)]
 mod tests_util;

@@ -1,19 +1,23 @@
-//! `round(δ·tan θ)` exactly, for θ a whole number of half degrees, 0 ≤ θ < 90°
-//! (G76.INFEED.Z: θ = a/2 with a = 0…99; G76.PULLOUT: θ = parameter 5131, 1…89°).
+//! `round(δ·tan θ)` exactly, for θ a whole number of tenths of a degree, 0 ≤ θ < 90°
+//! (G76.INFEED.Z: θ = a/2 with a = 0…99, half degrees; G76.PULLOUT: θ = parameter 5131, 1…89°;
+//! G162.A: θ = |A| on the 0.1° grid, 0…89°).
 //!
 //! # Argument
 //!
-//! Write θ = h·π/360 with h = 0…179. tan 0 = 0 and tan 45° = 1 are exact (h = 0, h = 90). For
-//! every other h, tan θ is irrational (the only rational values of tan at rational multiples of
-//! π are 0 and ±1), so δ·tan θ is never exactly k + ½ for δ ≠ 0 and the rounding is decided by
-//! any enclosure narrow enough. The enclosure is computed in fixed point with scale 2^p:
+//! Write θ = h·π/1800 with h = 0…899 (tenths of a degree). tan 0 = 0 and tan 45° = 1 are exact
+//! (h = 0, h = 450). For every other h, tan θ is irrational: tan of a rational multiple of π other
+//! than 0 and π/4 (modulo π, on [0, π/2)) is irrational — were tan θ = r rational, e^{2iθ} =
+//! (1 + ir)/(1 − ir) would be a root of unity in ℚ(i), i.e. ±1 or ±i, so θ ∈ {0, π/4, π/2, 3π/4}
+//! modulo π. Hence δ·tan θ is never exactly k + ½ for δ ≠ 0 and the rounding is decided by any
+//! enclosure narrow enough. The enclosure is computed
+//! in fixed point with scale 2^p:
 //!
 //! 1. **π** by Machin's formula π = 16·atan(1/5) − 4·atan(1/239). Each series term
 //!    ⌊2^p / ((2j+1)·x^(2j+1))⌋ is exact up to < 1 unit (nested floors of integer divisions equal
 //!    one floor), the series alternate with decreasing terms, so stopping at the first term that
 //!    floors to 0 leaves a tail < 1 unit: each atan is within (terms + 1) units, π·2^p within
 //!    16·e₁ + 4·e₂ units.
-//! 2. **θ** enclosed by θ_lo = ⌊h·π_lo/360⌋, θ_hi = ⌈h·π_hi/360⌉ (both exact fixed-point values
+//! 2. **θ** enclosed by θ_lo = ⌊h·π_lo/1800⌋, θ_hi = ⌈h·π_hi/1800⌉ (both exact fixed-point values
 //!    below π/2 for p ≥ 64).
 //! 3. **sin, cos** at the exact endpoints by Taylor series. Term n+2 is term n times x²/((n+1)(n+2))
 //!    computed with a floor; as x < 1.6 the factor is < 1, so the error of the j-th term grows by
@@ -43,16 +47,16 @@ const BASE_BITS: u64 = 192;
 /// The largest precision tried.
 const MAX_BITS: u64 = 1 << 14;
 
-/// `round(δ·tan(h/2 degrees))`, half up on the magnitude, for `h` = 0…179 (θ < 90°).
-/// `h ≥ 180` is outside the domain and yields `None`.
-pub fn round_mul_tan_half_degrees(delta: i64, h: u32) -> Option<i64> {
-    if h >= 180 {
+/// `round(δ·tan(h/10 degrees))`, half up on the magnitude, for `h` = 0…899 (θ < 90°), the
+/// tenths of a degree G162.A reads. `h ≥ 900` is outside the domain and yields `None`.
+pub fn round_mul_tan_tenths(delta: i64, h: u32) -> Option<i64> {
+    if h >= 900 {
         return None;
     }
     if h == 0 || delta == 0 {
         return Some(0);
     }
-    if h == 90 {
+    if h == 450 {
         return Some(delta);
     }
     let mag = BigInt::from(delta.unsigned_abs());
@@ -67,6 +71,15 @@ pub fn round_mul_tan_half_degrees(delta: i64, h: u32) -> Option<i64> {
         }
         p *= 2;
     }
+}
+
+/// `round(δ·tan(h/2 degrees))`, half up on the magnitude, for `h` = 0…179 (θ < 90°).
+/// `h ≥ 180` is outside the domain and yields `None`.
+pub fn round_mul_tan_half_degrees(delta: i64, h: u32) -> Option<i64> {
+    if h >= 180 {
+        return None;
+    }
+    round_mul_tan_tenths(delta, 5 * h)
 }
 
 /// `round(δ·tan(a/2))` for the tool angle `a` in whole degrees (G76.INFEED.Z).
@@ -85,7 +98,7 @@ fn round_scaled(v: &BigInt, p: u64) -> BigInt {
     (v + half) >> p
 }
 
-/// [t_lo, t_hi] with t_lo·2^-p ≤ tan(h·π/360) ≤ t_hi·2^-p, cached.
+/// [t_lo, t_hi] with t_lo·2^-p ≤ tan(h·π/1800) ≤ t_hi·2^-p, cached.
 fn tan_enclosure(h: u32, p: u64) -> (BigInt, BigInt) {
     type Cache = Mutex<HashMap<(u32, u64), (BigInt, BigInt)>>;
     static CACHE: OnceLock<Cache> = OnceLock::new();
@@ -104,9 +117,9 @@ fn compute_tan_enclosure(h: u32, p: u64) -> (BigInt, BigInt) {
     let pi_lo = &pi - BigInt::from(pi_err);
     let pi_hi = &pi + BigInt::from(pi_err);
     let h = BigInt::from(h);
-    let d360 = BigInt::from(360);
-    let theta_lo = (&h * &pi_lo).div_floor(&d360);
-    let theta_hi = (&h * &pi_hi).div_ceil(&d360);
+    let d1800 = BigInt::from(1800);
+    let theta_lo = (&h * &pi_lo).div_floor(&d1800);
+    let theta_hi = (&h * &pi_hi).div_ceil(&d1800);
     let (s_lo_c, e1) = sin_fixed(&theta_lo, p);
     let (s_hi_c, e2) = sin_fixed(&theta_hi, p);
     let (c_lo_c, e3) = cos_fixed(&theta_hi, p);
@@ -238,6 +251,28 @@ mod tests {
             );
             assert_eq!(round_mul_tan_half_angle(-d, 45), Some(-(round_sqrt_ratio(2 * d2, 1) - d)));
         }
+    }
+
+    /// G162.A: tenths of a degree. tan 15° = 2 − √3 and tan 75° = 2 + √3 against integer square
+    /// roots; other tenths against 50-digit values (27.3° → 516.138…, 0.1° → 1745.331…).
+    #[test]
+    fn tenths_of_a_degree() {
+        for d in (1..300).chain([999_999_999]) {
+            let r3 = round_sqrt_ratio(3 * (d as u128) * (d as u128), 1);
+            assert_eq!(round_mul_tan_tenths(d, 150), Some(2 * d - r3), "15° {d}");
+            assert_eq!(round_mul_tan_tenths(d, 750), Some(2 * d + r3), "75° {d}");
+            assert_eq!(round_mul_tan_tenths(d, 300), round_mul_tan_degrees(d, 30));
+            assert_eq!(round_mul_tan_tenths(d, 275), round_mul_tan_half_degrees(d, 55));
+        }
+        assert_eq!(round_mul_tan_tenths(1_000, 273), Some(516));
+        assert_eq!(round_mul_tan_tenths(-1_000, 273), Some(-516));
+        assert_eq!(round_mul_tan_tenths(2_000, 295), Some(1_132)); // 1131.546
+        assert_eq!(round_mul_tan_tenths(1_000_000, 1), Some(1_745)); // 1745.331
+        assert_eq!(round_mul_tan_tenths(1_000, 890), Some(57_290)); // 57289.962
+        assert_eq!(round_mul_tan_tenths(1_000, 899), Some(572_957)); // 572957.213
+        assert_eq!(round_mul_tan_tenths(1_000, 450), Some(1_000));
+        assert_eq!(round_mul_tan_tenths(1_000, 0), Some(0));
+        assert_eq!(round_mul_tan_tenths(1_000, 900), None);
     }
 
     #[test]

@@ -4,7 +4,8 @@
 use crate::tests_util::{alarm_with as alarm_of, Expect};
 use crate::expand;
 use cycle_vocab::text::Trace;
-use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Event, Grid, Increment, MoveKind, Params, Rule, Units};
+use cycle_vocab::readings::G162Lead;
+use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Event, Grid, Increment, MoveKind, Params, Readings, Rule, Units};
 
 fn nc201() -> Config {
     Config { dialect: Dialect::Nc201, ..Config::default() }
@@ -76,6 +77,21 @@ fn single_pass() {
     );
     let rules: Vec<Rule> = t.events.iter().map(|e| e.rule()).collect();
     assert_eq!(rules[1], Rule::G162X);
+    // A tapered single pass: X is the thread's END; ② starts at X23 − 2 = X21.
+    let t = run("G0 X30 Z5\nG162 X23 Z-20 W2 H500 F1.5\n", &nc201());
+    let m: Vec<(MoveKind, i64, i64)> = t.moves().skip(1).map(|m| (m.kind, m.x, m.z)).collect();
+    assert_eq!(
+        m,
+        vec![(MoveKind::Feed, 21_000, 5_000), (MoveKind::Thread, 23_000, -20_000), (MoveKind::Feed, 30_000, -20_000), (MoveKind::Feed, 30_000, 5_000)]
+    );
+    // The side and the checks use that start X: from X22 the thread starts below S (s = +1)
+    // and ends above it at X23 — the retract ④ would go into the work; from X21 there is no
+    // approach (s = 0). (Read as a start X, X23 from X22 would be a legal internal thread.)
+    assert_eq!(alarm_of("G0 X22 Z5\nG162 X23 Z-20 W2 H500 F1.5\n", &nc201()), (AlarmCode::Geometry, Some('X'), Rule::G162Retract, 2));
+    assert_eq!(alarm_of("G0 X21 Z5\nG162 X23 Z-20 W2 H500 F1.5\n", &nc201()), (AlarmCode::Geometry, Some('X'), Rule::G162Retract, 2));
+    // Multi-pass: X stays the start of the depth-0 line.
+    let t = run("G0 X30 Z5\nG162 X23 Z-20 W2 H500 P0.5 Q0.5 F1.5\n", &nc201());
+    assert_eq!(t.moves().nth(1).map(|m| m.x), Some(22_000));
 }
 
 /// NC201.ABSINC: G91 distances from the position before the block give the same cycle; G91 is
@@ -137,6 +153,11 @@ fn infeed_angle() {
     // Half degrees: 27.5°; 1 mm·tan 27.5° = 0.52057 → 0.521.
     let half = run("G0 X30 Z5\nG162 X24 Z-20 H500 P1 Q1 A27.5 F1.5\n", &nc201());
     assert_eq!(half.moves().nth(1).map(|m| m.z), Some(5_521));
+    // Any tenth: 27.3°; 1 mm·tan 27.3° = 0.516138 → 0.516; 14.9°: 0.266 (0.26608).
+    let tenth = run("G0 X30 Z5\nG162 X24 Z-20 H500 P1 Q1 A27.3 F1.5\n", &nc201());
+    assert_eq!(tenth.moves().nth(1).map(|m| m.z), Some(5_516));
+    let tenth = run("G0 X30 Z5\nG162 X24 Z-20 H500 P1 Q1 A-14.9 F1.5\n", &nc201());
+    assert_eq!(tenth.moves().nth(1).map(|m| m.z), Some(4_734));
 }
 
 /// G162.V: the leg is a feed at H, 45° outward: Z travel V toward the cut, X travel V radius.
@@ -157,21 +178,49 @@ fn run_out_leg() {
     );
 }
 
-/// G162.B, G162.I, G162.J: start angle, the variable-lead fields, the stop at |I|.
+/// G162.B, G162.I, G162.J: start angle, the variable-lead fields, the stop at |I|. The letter
+/// (`g162.lead=steps`, the default) marks the move stepped (` L1`); `continuous` does not.
 #[test]
 fn start_angle_and_variable_pitch() {
     let t = run("G0 X30 Z5\nG162 X24 Z-20 H500 F1.5 B90 I-0.5 J180\n", &nc201());
     let th = t.moves().find(|m| m.kind == MoveKind::Thread).copied().unwrap();
     assert_eq!((th.feed, th.angle, th.lead_change, th.lead_change_angle, th.lead_floor), (15_000, 90_000, -5_000, 180_000, 5_000));
+    assert!(th.lead_steps);
+    assert!(t.to_gcode().contains("G32 X24.000 Z-20.000 F1.5000 Q90000 K-0.5000 J180000 R0.5000 L1\n"));
+    let cont = with_lead(G162Lead::Continuous);
+    let t = run("G0 X30 Z5\nG162 X24 Z-20 H500 F1.5 B90 I-0.5 J180\n", &cont);
+    let tc = t.moves().find(|m| m.kind == MoveKind::Thread).copied().unwrap();
+    assert_eq!(tc, cycle_vocab::Move { lead_steps: false, ..th });
     assert!(t.to_gcode().contains("G32 X24.000 Z-20.000 F1.5000 Q90000 K-0.5000 J180000 R0.5000\n"));
+    assert_eq!(run("G0 X30 Z5\nG162 X24 Z-20 H500 F1.5 I0.1\n", &with_lead(G162Lead::Steps)), run("G0 X30 Z5\nG162 X24 Z-20 H500 F1.5 I0.1\n", &nc201()));
     // Growing, J omitted: per revolution, no floor; B360 is the zero mark.
     let t = run("G0 X30 Z5\nG162 X24 Z-20 H500 F1.5 B360 I0.01\n", &nc201());
     let th = t.moves().find(|m| m.kind == MoveKind::Thread).copied().unwrap();
     assert_eq!((th.angle, th.lead_change, th.lead_change_angle, th.lead_floor), (0, 100, 360_000, 0));
-    // F ≤ |I| already: the change has stopped, the lead is constant.
+    // F ≤ |I| already: the change has stopped, the lead is constant (never stepped).
     let t = run("G0 X30 Z5\nG162 X24 Z-20 H500 F0.5 I-0.5\n", &nc201());
     let th = t.moves().find(|m| m.kind == MoveKind::Thread).copied().unwrap();
-    assert_eq!((th.feed, th.lead_change, th.lead_change_angle, th.lead_floor), (5_000, 0, 0, 0));
+    assert_eq!((th.feed, th.lead_change, th.lead_change_angle, th.lead_floor, th.lead_steps), (5_000, 0, 0, 0, false));
+}
+
+fn with_lead(lead: G162Lead) -> Config {
+    Config { readings: Readings { g162_lead: lead, ..Readings::default() }, ..nc201() }
+}
+
+/// G162.I, the growing-pitch bound under each reading. F9999 I0.0001 over 10 mm: continuously
+/// the lead passes Fmax; in steps the first step comes after one revolution (9999 mm of travel),
+/// never reached. F1 I9998.999: the first step, to 9999.999 mm > Fmax, after 1 mm: reached.
+#[test]
+fn growing_pitch_bound_by_reading() {
+    let over = (AlarmCode::Geometry, Some('I'), Rule::G162I, 2);
+    let slow = "G0 X30 Z5\nG162 X24 Z-5 H1 F9999 I0.0001\n";
+    assert_eq!(alarm_of(slow, &with_lead(G162Lead::Continuous)), over);
+    assert_eq!(run(slow, &nc201()).alarm, None);
+    let jump = "G0 X30 Z5\nG162 X24 Z-5 H1 F1 I9998.999\n";
+    assert_eq!(alarm_of(jump, &nc201()), over);
+    // Exactly 1 mm of thread: the step would come at its end, not during it.
+    assert_eq!(run("G0 X30 Z5\nG162 X24 Z4 H1 F1 I9998.999\n", &nc201()).alarm, None);
+    assert_eq!(alarm_of("G0 X30 Z5\nG162 X24 Z3.999 H1 F1 I9998.999\n", &nc201()), over);
 }
 
 /// G162.F: F omitted takes the modal feed (a G01 mm/min value read as mm/rev); F in G162 sets
@@ -197,7 +246,8 @@ fn alarms() {
         ("G162 Z1 H1 F1", (AlarmCode::MissingWord, Some('X'), Rule::G162Format, 1)),
         ("G162 X1 H1 F1", (AlarmCode::MissingWord, Some('Z'), Rule::G162Format, 1)),
         // Values, alphabetical: A before B before H …
-        ("G162 X1 Z1 H0 F1 A27.3 B400", (AlarmCode::Precision, Some('A'), Rule::G162A, 1)),
+        ("G162 X1 Z1 H0 F1 A27.35 B400", (AlarmCode::Precision, Some('A'), Rule::G162A, 1)),
+        ("G162 X1 Z1 H0 F1 A27.3 B400", (AlarmCode::OutOfRange, Some('B'), Rule::G162B, 1)),
         ("G162 X1 Z1 H0 F1 A90 B400", (AlarmCode::OutOfRange, Some('A'), Rule::G162A, 1)),
         ("G162 X1 Z1 H0 F1 B400", (AlarmCode::OutOfRange, Some('B'), Rule::G162B, 1)),
         ("G162 X1 Z1 H0 F1", (AlarmCode::OutOfRange, Some('H'), Rule::G162H, 1)),
@@ -211,9 +261,10 @@ fn alarms() {
         ("G0 X30 Z5\nG162 X24 Z-5 H1 F1 V10", (AlarmCode::Geometry, Some('V'), Rule::G162V, 2)),
         ("G0 X30 Z5\nG162 X30 Z-5 H1 F1", (AlarmCode::Geometry, Some('X'), Rule::G162Retract, 2)),
         ("G0 X30 Z5\nG162 X24 Z-5 H1 F1 V4", (AlarmCode::Geometry, Some('X'), Rule::G162Retract, 2)),
-        ("G0 X30 Z5\nG162 X24 Z-5 H1 F1 W7", (AlarmCode::Geometry, Some('X'), Rule::G162Retract, 2)),
+        ("G0 X30 Z5\nG162 X24 Z-5 H1 F1 P1 Q1 W7", (AlarmCode::Geometry, Some('X'), Rule::G162Retract, 2)),
+        ("G0 X30 Z5\nG162 X31 Z-5 H1 F1 W7", (AlarmCode::Geometry, Some('X'), Rule::G162Retract, 2)),
         ("G0 X30 Z5\nG162 X24 Z-5 H1 F1 P11 Q0.001", (AlarmCode::TooManyPasses, Some('Q'), Rule::PrjMaxPass, 2)),
-        ("G0 X30 Z5\nG162 X24 Z-5 H1 F9999 I0.0001", (AlarmCode::Geometry, Some('I'), Rule::G162I, 2)),
+        ("G0 X30 Z5\nG162 X24 Z-5 H1 F1 I9998.999", (AlarmCode::Geometry, Some('I'), Rule::G162I, 2)),
         // Dialect and nc201 modal codes.
         ("G92 X1 Z1 F1", (AlarmCode::UnsupportedCode, Some('G'), Rule::PrjDialect, 1)),
         ("G32 X1 Z1 F1", (AlarmCode::UnsupportedCode, Some('G'), Rule::PrjDialect, 1)),

@@ -5,7 +5,8 @@
 use crate::tests_util::*;
 use crate::expand;
 use cycle_vocab::text::Trace;
-use cycle_vocab::{AlarmCode, Config, Dialect, MoveKind, PassKind, Rule};
+use cycle_vocab::readings::G73C;
+use cycle_vocab::{AlarmCode, Config, Dialect, MoveKind, PassKind, Readings, Rule};
 
 
 
@@ -43,12 +44,47 @@ fn pass3(tx: i64, tz: i64, f: MoveKind) -> Vec<M> {
     ]
 }
 
+/// `g73.c=skip`: no retreat to C.
+fn skip_c() -> Config {
+    Config { readings: Readings { g73_c: G73C::Skip, ..Readings::default() }, ..Config::default() }
+}
+
+/// The moves of `src` under the letter (`g73.c=visit`, the default) are those under `skip` with
+/// the rapid to `c` inserted after the move at `at` (the last move before the cycle).
+fn visits_c(src: &str, at: usize, c: (i64, i64)) -> Vec<M> {
+    let mut skip = moves(&run_with(src, &skip_c()));
+    skip.insert(at + 1, (Rapid, c.0, c.1, 0, 0));
+    let visit = moves(&run(src));
+    assert_eq!(visit, skip, "{src}");
+    assert_eq!(moves(&run_with(src, &Config { readings: Readings { g73_c: G73C::Visit, ..Readings::default() }, ..Config::default() })), visit);
+    visit
+}
+
+/// G73 point C: the seed's C, X86.5 Z15.5 (A X50 Z10 + (2·18 + 0.5, 5 + 0.5)), one rapid before
+/// pass 1's header under the letter, tagged G73.PATH; none under `skip`; none when C = A.
+#[test]
+fn example3_point_c() {
+    let t = run(EXAMPLE3);
+    let m: Vec<_> = t.moves().take(3).map(|m| (m.kind, m.x, m.z, m.rule)).collect();
+    assert_eq!(m[1], (Rapid, 86_500, 15_500, Rule::G73Path));
+    assert_eq!(m[2], (Rapid, 82_900, 15_000, Rule::G73Path)); // pass 1: A + (2·16.2 + 0.5, 4.5 + 0.5)
+    // Header after the rapid to C: event 0 the G00 to A, 1 the rapid to C, 2 pass 1's header.
+    assert!(matches!(t.events[2], cycle_vocab::Event::Pass(_)));
+    visits_c(EXAMPLE3, 0, (86_500, 15_500));
+    // C = A (no escapes, no allowances): no move.
+    let src = "G0 X10 Z0\nG73 U0 W0 R2\nG73 P1 Q2 F1\nN1 G1 X5\nN2 Z-5\n";
+    assert_eq!(run(src), run_with(src, &skip_c()));
+    // Signs as written: Δi −2, Δu −0.4, Δk 1, Δw −0.3 → C = (10 − 4 − 0.4, 0 + 1 − 0.3).
+    visits_c("G0 X10 Z0\nG73 U-2 W1 R2\nG73 P1 Q2 U-0.4 W-0.3 F1\nN1 G1 X5\nN2 Z-5\n", 0, (5_600, 700));
+}
+
 /// G73.EXAMPLE: "ten passes, pass n offset by (2·round(1.8·(10 − n)) + 0.5, round(0.5·(10 − n))
-/// + 0.5) — the last one on the contour plus U0.5 W0.5"; then one rapid to A; then G70.
+/// + 0.5) — the last one on the contour plus U0.5 W0.5"; then one rapid to A; then G70. Under
+/// the letter the rapid to C X86.5 Z15.5 comes first.
 #[test]
 fn example3_ten_passes() {
     let t = run(EXAMPLE3);
-    let mut expect = vec![(Rapid, 50_000, 10_000, 0, 0)];
+    let mut expect = vec![(Rapid, 50_000, 10_000, 0, 0), (Rapid, 86_500, 15_500, 0, 0)];
     for n in 1..=10i64 {
         let (tx, tz) = (2 * 1_800 * (10 - n) + 500, 500 * (10 - n) + 500);
         expect.extend(pass3(tx, tz, Feed));
@@ -67,7 +103,7 @@ fn example3_ten_passes() {
     assert_eq!(p[..10], rough[..]);
     assert_eq!(p[10], (1, PassKind::Finish, 50_000, Rule::G70Path));
     // The roughing runs at the cycle's F100; G70 at its own F30.
-    assert!(t.moves().take(71).filter(|m| m.kind != Rapid).all(|m| m.feed == 1_000_000));
+    assert!(t.moves().take(72).filter(|m| m.kind != Rapid).all(|m| m.feed == 1_000_000));
 }
 
 /// G73.COUNT edge (`g73_d1.nc`): d = 1 is one pass exactly at the allowances U0.4 W0.1.
@@ -76,6 +112,7 @@ fn d1_is_one_pass_at_the_allowances() {
     let t = run("G00 X40 Z5\nG73 U6 W2 R1\nG73 P10 Q40 U0.4 W0.1 F0.2\nN10 G00 X10 Z1\nN20 G01 Z-10\nN30 G02 X20 Z-15 R5\nN40 G01 X30 Z-25\nG00 X60 Z50\n");
     let expect = vec![
         (Rapid, 40_000, 5_000, 0, 0),
+        (Rapid, 52_400, 7_100, 0, 0), // C: A + (2·6 + 0.4, 2 + 0.1)
         (Rapid, 40_400, 5_100, 0, 0),
         (Rapid, 10_400, 1_100, 0, 0),
         (Feed, 10_400, -9_900, 0, 0),
@@ -106,15 +143,18 @@ fn both_formats() {
             (Feed, 40_000 + tx, -30_000 + tz, 0, 0),
         ]
     };
-    let mut expect = vec![(Rapid, 50_000, 5_000, 0, 0)];
+    // Each cycle first retreats to its C: A + (2Δi + Δu, Δk + Δw).
+    let mut expect = vec![(Rapid, 50_000, 5_000, 0, 0), (Rapid, 66_500, 7_200, 0, 0)];
     for (x, z) in [(12_000, 1_500), (8_000, 1_000), (4_000, 500), (0, 0)] {
         expect.extend(pass(x + 500, z + 200));
     }
     expect.push((Rapid, 50_000, 5_000, 0, 0));
+    expect.push((Rapid, 59_300, 6_600, 0, 0));
     for (x, z) in [(6_000, 1_000), (3_000, 500), (0, 0)] {
         expect.extend(pass(x + 300, z + 100));
     }
     expect.push((Rapid, 50_000, 5_000, 0, 0));
+    expect.push((Rapid, 66_000, 7_000, 0, 0));
     // Format a again, no U W: the kept U8 W2 R4, allowances 0.
     for (x, z) in [(12_000, 1_500), (8_000, 1_000), (4_000, 500), (0, 0)] {
         expect.extend(pass(x, z));
@@ -136,6 +176,7 @@ fn parameters_rounding_and_flow() {
     let t = run_with("G1 X10 Z0 F1\nG73 P1 Q2 F0.5\nN1 G0 X5\nN2 G1 Z-5\nZ-1\n", &config);
     let expect = vec![
         (Feed, 10_000, 0, 0, 0),
+        (Rapid, 10_002, -3, 0, 0), // C: A + (2·1, −3)
         (Rapid, 10_002, -2, 0, 0), // round(1/2) = 1 → 2 on X; round(−3/2) = −2
         (Rapid, 5_002, -2, 0, 0),
         (Feed, 5_002, -5_002, 0, 0),

@@ -5,7 +5,8 @@
 use crate::tests_util::*;
 use crate::expand;
 use cycle_vocab::text::Trace;
-use cycle_vocab::{AlarmCode, Config, Dialect, MoveKind, PassKind, Rule};
+use cycle_vocab::readings::G75Relief;
+use cycle_vocab::{AlarmCode, Config, Dialect, MoveKind, PassKind, Readings, Rule};
 
 
 
@@ -99,22 +100,37 @@ fn g74_peck_edges() {
     assert_eq!(moves(&t), expect);
 }
 
-/// G75.RELIEF (`g75_relief.nc`): grooves Z−10, −13, −16, −19, −20 (step −Z), relief +0.3 in Z in
-/// every groove but the first; pecks of 2·2 with returns of 2·0.5.
+/// G75.RELIEF (`g75_relief.nc`): grooves Z−10, −13, −16, −19, −20 (step −Z), a relief of 0.3 in
+/// Z in every groove but the first — under the letter (`minus-z`, the default) toward −Z, here
+/// with the step; under `against-step` toward +Z. Pecks of 2·2 with returns of 2·0.5.
 #[test]
-fn g75_relief_against_the_step() {
-    let t = run("G00 X52 Z-10\nG75 R0.5\nG75 X40 Z-20 P2 Q3 R0.3 F0.05\n");
-    let pecks = |z: i64| vec![(Feed, 48_000, z), (Rapid, 49_000, z), (Feed, 44_000, z), (Rapid, 45_000, z), (Feed, 40_000, z)];
-    let mut expect = vec![(Rapid, 52_000, -10_000)];
-    expect.extend(pecks(-10_000));
-    expect.push((Rapid, 52_000, -10_000));
-    for z in [-13_000, -16_000, -19_000, -20_000] {
-        expect.push((Rapid, 52_000, z));
-        expect.extend(pecks(z));
-        expect.extend([(Rapid, 40_000, z + 300), (Rapid, 52_000, z + 300)]);
-    }
-    expect.push((Rapid, 52_000, -10_000));
-    assert_eq!(moves(&t), expect);
+fn g75_relief_by_reading() {
+    let src = "G00 X52 Z-10\nG75 R0.5\nG75 X40 Z-20 P2 Q3 R0.3 F0.05\n";
+    let expect = |relief: i64| {
+        let pecks = |z: i64| vec![(Feed, 48_000, z), (Rapid, 49_000, z), (Feed, 44_000, z), (Rapid, 45_000, z), (Feed, 40_000, z)];
+        let mut expect = vec![(Rapid, 52_000, -10_000)];
+        expect.extend(pecks(-10_000));
+        expect.push((Rapid, 52_000, -10_000));
+        for z in [-13_000, -16_000, -19_000, -20_000] {
+            expect.push((Rapid, 52_000, z));
+            expect.extend(pecks(z));
+            expect.extend([(Rapid, 40_000, z + relief), (Rapid, 52_000, z + relief)]);
+        }
+        expect.push((Rapid, 52_000, -10_000));
+        expect
+    };
+    let with = |r: G75Relief| Config { readings: Readings { g75_relief: r, ..Readings::default() }, ..Config::default() };
+    assert_eq!(moves(&run(src)), expect(-300));
+    assert_eq!(moves(&run_with(src, &with(G75Relief::MinusZ))), expect(-300));
+    assert_eq!(moves(&run_with(src, &with(G75Relief::AgainstStep))), expect(300));
+    // Grooves stepping toward +Z: the letter still relieves toward −Z, against the step too.
+    let up = "G00 X52 Z-20\nG75 X40 Z-17 P6 Q3 R0.3 F0.05\n";
+    let reliefs = |c: &Config| -> Vec<i64> { run_with(up, c).moves().filter(|m| m.rule == Rule::G75Relief).map(|m| m.z).collect() };
+    assert_eq!(reliefs(&Config::default()), vec![-17_300]);
+    assert_eq!(reliefs(&with(G75Relief::AgainstStep)), vec![-17_300]);
+    // G74 is not affected by the reading: against its step in X.
+    let g74 = "G00 X0 Z2\nG74 X10 Z-5 P3 Q5 R0.5 F0.1\n";
+    assert_eq!(run_with(g74, &with(G75Relief::AgainstStep)), run(g74));
 }
 
 /// G75.FORMAT: one groove without Z, Q, R (`g75_single_groove.nc`).

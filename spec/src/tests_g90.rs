@@ -4,7 +4,8 @@
 use crate::tests_util::{alarm_with as alarm_of, passes, Expect};
 use crate::expand;
 use cycle_vocab::text::Trace;
-use cycle_vocab::{AlarmCode, Config, Dialect, Grid, Increment, MoveKind, PassKind, Rule, Units};
+use cycle_vocab::readings::G94K;
+use cycle_vocab::{AlarmCode, Config, Dialect, Grid, Increment, MoveKind, PassKind, Readings, Rule, Units};
 
 fn run(src: &str) -> Trace {
     expand(src.as_bytes(), &Config::default())
@@ -82,15 +83,43 @@ fn taper_signs() {
     assert_eq!(run("G0 X50 Z2\nG90 X40 Z-20 I-100 F0.2\n").alarm, None);
     assert_eq!(run("G0 X20 Z2\nG90 X30 Z-20 I100 F0.2\n").alarm, None);
 
-    let t = run(include_str!("../../tests/programs/g94_taper.nc"));
+    // g94_taper.nc is written for `g94.k=start-minus-end` (FANUC: K = start Z − end Z).
+    let fanuc_k = g94k(G94K::StartMinusEnd);
+    let t = expand(include_bytes!("../../tests/programs/g94_taper.nc"), &fanuc_k);
     let z_depths: Vec<i64> = passes(&t).iter().map(|p| p.2 / 2).collect();
     assert_eq!(z_depths, vec![5_000, 7_000, 6_000, 0, 8_000]);
     let over = (AlarmCode::Geometry, Some('K'), Rule::G94Taper, 2);
-    assert_eq!(alarm_of("G0 X50 Z2\nG94 X20 Z-6 K8.001 F0.2\n", &Config::default()), over);
-    assert_eq!(alarm_of("G0 X50 Z-6\nG94 X20 Z2 K-8.001 F0.2\n", &Config::default()), over);
-    assert_eq!(run("G0 X50 Z-6\nG94 X20 Z2 K-8 F0.2\n").alarm, None);
+    assert_eq!(alarm_of("G0 X50 Z2\nG94 X20 Z-6 K8.001 F0.2\n", &fanuc_k), over);
+    assert_eq!(alarm_of("G0 X50 Z-6\nG94 X20 Z2 K-8.001 F0.2\n", &fanuc_k), over);
+    assert_eq!(expand(b"G0 X50 Z-6\nG94 X20 Z2 K-8 F0.2\n", &fanuc_k).alarm, None);
     // ① is tagged with the taper rule when K ≠ 0.
     assert_eq!(t.moves().nth(1).map(|m| (m.kind, m.z, m.rule)), Some((MoveKind::Rapid, -3_000, Rule::G94Taper)));
+}
+
+fn g94k(k: G94K) -> Config {
+    Config { readings: Readings { g94_k: k, ..Readings::default() }, ..Config::default() }
+}
+
+/// G94.TAPER under the letter (`g94.k=end-minus-start`, the default): C.z = D.z − K, the taper
+/// checked on k = C.z − D.z (`g94_k_letter.nc`: the register's `G94 X20 Z-5 K-2` starts at Z−3;
+/// FANUC's reading starts the same block at Z−7).
+#[test]
+fn g94_k_letter() {
+    let src = include_str!("../../tests/programs/g94_k_letter.nc");
+    let t = run(src);
+    assert_eq!(t, expand(src.as_bytes(), &g94k(G94K::EndMinusStart)));
+    let starts: Vec<i64> = t.moves().filter(|m| m.rule == Rule::G94Taper).map(|m| m.z).collect();
+    assert_eq!(starts, vec![-3_000, -6_000, -7_000]); // the K-8 cut starts at A.z: no approach
+    let z_depths: Vec<i64> = passes(&t).iter().map(|p| p.2 / 2).collect();
+    assert_eq!(z_depths, vec![5_000, 8_000, 0, 9_000]);
+    let fanuc = expand(b"G0 X50 Z2\nG94 X20 Z-5 K-2 F0.2\n", &g94k(G94K::StartMinusEnd));
+    assert_eq!(fanuc.moves().nth(1).map(|m| m.z), Some(-7_000));
+    // The taper edge under the letter: k = −K against W.
+    let over = (AlarmCode::Geometry, Some('K'), Rule::G94Taper, 2);
+    assert_eq!(alarm_of("G0 X50 Z2\nG94 X20 Z-6 K-8.001 F0.2\n", &Config::default()), over);
+    assert_eq!(alarm_of("G0 X50 Z-6\nG94 X20 Z2 K8.001 F0.2\n", &Config::default()), over);
+    assert_eq!(run("G0 X50 Z2\nG94 X20 Z-6 K8.001 F0.2\n").alarm, None); // same sign: any size
+    assert_eq!(run("G0 X50 Z-6\nG94 X20 Z2 K8 F0.2\n").alarm, None);
 }
 
 /// G90.MODAL: X, Z and I kept within a run; a block without axis words updates I and F; G76
@@ -163,7 +192,7 @@ fn alarms() {
         ("G0 X50 Z2\nG90 X40 Z2 I9 F0.3", (AlarmCode::Geometry, Some('Z'), Rule::G90Format, 2)),
         ("G0 X50 Z2\nG90 X40 Z-40 I5.001 F0.3", (AlarmCode::Geometry, Some('I'), Rule::G90Taper, 2)),
         ("G0 X50 Z2\nG94 X50 Z-2 K9 F0.3", (AlarmCode::Geometry, Some('X'), Rule::G94Format, 2)),
-        ("G0 X50 Z2\nG94 X40 Z-2 K4.001 F0.3", (AlarmCode::Geometry, Some('K'), Rule::G94Taper, 2)),
+        ("G0 X50 Z2\nG94 X40 Z-2 K-4.001 F0.3", (AlarmCode::Geometry, Some('K'), Rule::G94Taper, 2)),
     ];
     for (src, expect) in cases {
         assert_eq!(alarm_of(src, &c), *expect, "{src}");
@@ -200,7 +229,7 @@ fn other_grids() {
     let inch_isc = Config { grid: Grid { units: Units::Inch, increment: Increment::Isc }, ..Config::default() };
     let t = expand(b"G20\nG0 X2 Z0.1\nG94 X1.5 Z-0.00001 K-0.00002 F0.005\n", &inch_isc);
     assert_eq!(t.alarm, None);
-    assert_eq!(t.moves().nth(1).map(|m| (m.x, m.z)), Some((200_000, -3)));
+    assert_eq!(t.moves().nth(1).map(|m| (m.x, m.z)), Some((200_000, 1))); // C.z = −1 − (−2)
     assert_eq!(alarm_of("G20\nG94 X1.5 Z-0.000001 F0.005\n", &inch_isc), (AlarmCode::Precision, Some('Z'), Rule::ComUnits, 2));
     let metric_isc = Config { grid: Grid { units: Units::Metric, increment: Increment::Isc }, ..Config::default() };
     let t = expand(b"G0 X50 Z2\nG90 X40.0001 Z-40 I-0.0001 F0.3\n", &metric_isc);

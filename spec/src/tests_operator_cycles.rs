@@ -3,7 +3,8 @@
 
 use crate::tests_operator::{bit6, hold, lines, operator_alarm, play, reset, single, u_lines, EXAMPLE};
 use crate::expand;
-use cycle_vocab::{Action, Alarm, AlarmCode, Config, Dialect, Event, Params, Rule};
+use cycle_vocab::readings::ThreadZRef;
+use cycle_vocab::{Action, Alarm, AlarmCode, Config, Dialect, Event, Params, Readings, Rule};
 
 /// G76, two starts with a lead-in (E1), no pull-out (P010060: r = 00 input). U: 0 `G00 X40 Z5`;
 /// pass 1: 1 header, start 1: 2 rapid to the lead-in point X38.2 Z4.48, 3 the lead-in to X36.2,
@@ -41,14 +42,16 @@ fn g76_leadin_second_start() {
 
 /// G78 with a pull-out. U: 0 `G00 X40 Z5`; 1 header; 2 `G00 X36.2 Z4.48`; 3 cut to Z-18.52;
 /// 4 pull-out to X40.2 Z-20.52; 5, 6 rapids; 7 header 2; 8 `G00 X36 Z4.48`; 9 cut; 10 pull-out
-/// to X40 Z-20.52 (= A.x: ③ is not emitted); 11 `G00 X40 Z5`.
+/// to X40 Z-20.52 (= A.x: ③ is not emitted); 11 `G00 X40 Z5` — under `thread.zref=groove`,
+/// where the centre mode (00) stands at A.z − t(T) = 4.48 (under the letter it is A.z itself).
 const G78: &str = "G0 X40 Z5\nG78 P010060 Q100 R0.1\nG78 X36 Z-20 P1 Q0.8 F2\n";
 
 #[test]
 fn g78_hold_on_the_cut_and_on_the_pullout() {
-    let u = u_lines(G78, &Config::default());
+    let groove = |c: Config| Config { readings: Readings { thread_zref: ThreadZRef::Groove, ..Readings::default() }, ..c };
+    let u = u_lines(G78, &groove(Config::default()));
     // Cut at 1/2: P = (36.2, 4.48 − 11.5); P + (E − S) = P + (4, −2).
-    let t = play(G78, &bit6(0), &[hold(3, 1, 2), Action::Start]);
+    let t = play(G78, &groove(bit6(0)), &[hold(3, 1, 2), Action::Start]);
     assert_eq!(
         lines(&t)[3..10],
         [
@@ -63,7 +66,7 @@ fn g78_hold_on_the_cut_and_on_the_pullout() {
     );
     assert_eq!(lines(&t)[10..], u[1..]);
     // Pull-out of pass 2 at 1/2: to E = X40 Z-20.52, already at A.x: the X rapid has no length.
-    let t = play(G78, &bit6(0), &[hold(10, 1, 2), Action::Start]);
+    let t = play(G78, &groove(bit6(0)), &[hold(10, 1, 2), Action::Start]);
     assert_eq!(
         lines(&t)[10..16],
         [
@@ -77,7 +80,7 @@ fn g78_hold_on_the_cut_and_on_the_pullout() {
     );
     assert_eq!(lines(&t)[16..], u[7..]);
     // bit 6 = 1: runs on to the pull-out's end; single block stops after 6 and 11 (G76.SINGLE).
-    let t = play(G78, &bit6(1), &[single(true, 0), hold(3, 1, 2), Action::Start]);
+    let t = play(G78, &groove(bit6(1)), &[single(true, 0), hold(3, 1, 2), Action::Start]);
     let l = lines(&t);
     assert_eq!(l[1..3], ["(STOP SINGLE BLOCK) ; OP.SINGLE", "(CYCLE START) ; OP.SINGLE"]);
     assert_eq!(l[5..10], ["(PRESS HOLD AT X36.200 Z-7.020) ; G76.HOLD".to_string(), u[3].clone(), u[4].clone(), "(STOP FEED HOLD) ; G76.HOLD".into(), "(CYCLE START) ; OP.RESUME".into()]);

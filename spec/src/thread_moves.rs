@@ -132,7 +132,7 @@ pub fn g34_law(k: i64) -> LeadLaw {
     if k == 0 {
         LeadLaw::default()
     } else {
-        LeadLaw { change: k, change_angle: 360_000, floor: 0 }
+        LeadLaw { change: k, change_angle: 360_000, floor: 0, stepped: false }
     }
 }
 
@@ -178,6 +178,6 @@ mod tests {
     #[test]
     fn laws() {
         assert_eq!(g34_law(0), LeadLaw::default());
-        assert_eq!(g34_law(-5), LeadLaw { change: -5, change_angle: 360_000, floor: 0 });
+        assert_eq!(g34_law(-5), LeadLaw { change: -5, change_angle: 360_000, floor: 0, stepped: false });
     }
 }

@@ -131,15 +131,12 @@ pub fn millidegrees(n: &Number, word: u8, lo: i64, hi: i64, rule: Rule, line: u3
     in_range(&v, lo, hi, word, rule, line)
 }
 
-/// G162.A (M004, docs/INTERPRETATION.md): the infeed angle in half degrees. Read on the 0.1°
-/// grid (`PRECISION`, COM.UNITS); a value that is not a multiple of 0.5° is `PRECISION` on A,
-/// rule G162.A; |A| > 89° is `OUT OF RANGE` on A, rule G162.A.
-pub fn half_degrees(n: &Number, word: u8, line: u32) -> Result<i64, Alarm> {
-    let tenths = count(n, 1, word, line)?;
-    if !(&tenths % BigInt::from(5)).is_zero() {
-        return Err(alarm(AlarmCode::Precision, word, Rule::G162A, line));
-    }
-    in_range(&tenths, -890, 890, word, Rule::G162A, line).map(|t| t / 5)
+/// G162.A (M004, docs/INTERPRETATION.md "A" row of the word table): the infeed angle in tenths
+/// of a degree, any tenth legal. More than one decimal (`A27.35`) is `PRECISION` on A, rule
+/// G162.A; then |A| > 89° is `OUT OF RANGE` on A, rule G162.A.
+pub fn tenths_of_degree(n: &Number, word: u8, line: u32) -> Result<i64, Alarm> {
+    let tenths = count(n, 1, word, line).map_err(|_| alarm(AlarmCode::Precision, word, Rule::G162A, line))?;
+    in_range(&tenths, -890, 890, word, Rule::G162A, line)
 }
 
 /// How a word's value is read (check step 3): each family's word table names one per word.
@@ -166,8 +163,8 @@ pub enum Read {
     Feed { hi: i64, rule: Rule },
     /// Degrees on the 0.001° grid in `lo…hi`, out of range under `rule`.
     Millidegrees { lo: i64, hi: i64, rule: Rule },
-    /// G162.A: degrees in half-degree steps.
-    HalfDegrees,
+    /// G162.A: degrees on the 0.1° grid, in tenths.
+    Tenths,
     /// A reader of the family's own (e.g. the digits of P(m)(r)(a)).
     Own(fn(&Number, u8, &Config, u32) -> Result<i64, Alarm>),
 }
@@ -190,7 +187,7 @@ impl Read {
             Read::SignedLead { rule } => signed_lead(n, letter, grid, lead_max(grid), rule, line),
             Read::Feed { hi, rule } => feed(n, letter, grid, hi, rule, line),
             Read::Millidegrees { lo, hi, rule } => millidegrees(n, letter, lo, hi, rule, line),
-            Read::HalfDegrees => half_degrees(n, letter, line),
+            Read::Tenths => tenths_of_degree(n, letter, line),
             Read::Own(read) => read(n, letter, config, line),
         }
     }
@@ -259,7 +256,7 @@ mod tests {
         assert_eq!(feed(&num(big), b'H', g, N, Rule::G162H, 1), out(b'H', Rule::G162H));
         assert_eq!(signed_lead(&num(big), b'I', g, lead_max(g), Rule::G162I, 1), out(b'I', Rule::G162I));
         assert_eq!(millidegrees(&num(big), b'J', 1, N, Rule::G162J, 1), out(b'J', Rule::G162J));
-        assert_eq!(half_degrees(&num("99999999999999999.5"), b'A', 1), out(b'A', Rule::G162A));
+        assert_eq!(tenths_of_degree(&num("99999999999999999.5"), b'A', 1), out(b'A', Rule::G162A));
         assert_eq!(integer(&num(big), b'D', 0, 2, Rule::G76Mode, 1), out(b'D', Rule::G76Mode));
         assert_eq!(lead_from_i(&num(big), g, 1), out(b'I', Rule::ComRanges));
         // Precision is decided before the range.
@@ -276,12 +273,16 @@ mod tests {
     #[test]
     fn g162_angles_feeds_and_signed_leads() {
         let g = Grid::METRIC_ISB;
-        assert_eq!(half_degrees(&num("27.5"), b'A', 1), Ok(55));
-        assert_eq!(half_degrees(&num("-30"), b'A', 1), Ok(-60));
-        assert_eq!(half_degrees(&num("30.00"), b'A', 1), Ok(60));
-        assert_eq!(half_degrees(&num("27.3"), b'A', 1), Err(alarm(AlarmCode::Precision, b'A', Rule::G162A, 1)));
-        assert_eq!(half_degrees(&num("27.25"), b'A', 1), Err(alarm(AlarmCode::Precision, b'A', Rule::ComUnits, 1)));
-        assert_eq!(half_degrees(&num("89.5"), b'A', 1), Err(alarm(AlarmCode::OutOfRange, b'A', Rule::G162A, 1)));
+        assert_eq!(tenths_of_degree(&num("27.5"), b'A', 1), Ok(275));
+        assert_eq!(tenths_of_degree(&num("-30"), b'A', 1), Ok(-300));
+        assert_eq!(tenths_of_degree(&num("30.00"), b'A', 1), Ok(300));
+        // Any tenth is legal (G162.A, "A27.3 included").
+        assert_eq!(tenths_of_degree(&num("27.3"), b'A', 1), Ok(273));
+        assert_eq!(tenths_of_degree(&num("-89"), b'A', 1), Ok(-890));
+        assert_eq!(tenths_of_degree(&num("27.35"), b'A', 1), Err(alarm(AlarmCode::Precision, b'A', Rule::G162A, 1)));
+        assert_eq!(tenths_of_degree(&num("27.25"), b'A', 1), Err(alarm(AlarmCode::Precision, b'A', Rule::G162A, 1)));
+        assert_eq!(tenths_of_degree(&num("89.1"), b'A', 1), Err(alarm(AlarmCode::OutOfRange, b'A', Rule::G162A, 1)));
+        assert_eq!(tenths_of_degree(&num("89.5"), b'A', 1), Err(alarm(AlarmCode::OutOfRange, b'A', Rule::G162A, 1)));
         assert_eq!(millidegrees(&num("90.5"), b'B', 0, 360_000, Rule::G162B, 1), Ok(90_500));
         assert_eq!(
             millidegrees(&num("360.001"), b'B', 0, 360_000, Rule::G162B, 1),

@@ -13,8 +13,9 @@ pub mod unit;
 use crate::emit::{LeadLaw, Out};
 use crate::exact::{isqrt, round_div};
 use crate::multipass::check_max_passes;
-use crate::tangent::round_mul_tan_half_degrees;
+use crate::tangent::round_mul_tan_tenths;
 use crate::words::{alarm, lead_max};
+use cycle_vocab::readings::G162Lead;
 use cycle_vocab::{Alarm, AlarmCode, Config, Grid, PassKind, Rule};
 
 /// One G162 block, its words resolved to the grid (X as diameter counts).
@@ -22,7 +23,8 @@ use cycle_vocab::{Alarm, AlarmCode, Config, Grid, PassKind, Rule};
 pub struct G162Block {
     /// S: the position before the block (X diameter, Z).
     pub s: (i128, i128),
-    /// X0: the thread X (G162.X), diameter, absolute.
+    /// The X word (G162.X), diameter, absolute: the depth-0 line's start for a multi-pass
+    /// thread, the thread's end for a single pass ([`depth_zero_x`]).
     pub x0: i128,
     /// Ze: the end Z including the run-out leg, absolute.
     pub ze: i128,
@@ -34,8 +36,8 @@ pub struct G162Block {
     pub v: i64,
     /// Wd: the taper as a diameter difference over segment ②.
     pub wd: i128,
-    /// A in half degrees, signed.
-    pub a_half: i64,
+    /// A in tenths of a degree, signed.
+    pub a_tenths: i64,
     /// The lead F (or the modal feed), lead counts.
     pub lead: i64,
     /// B in 0.001°, 0…360 000.
@@ -86,6 +88,17 @@ pub fn retract_side_ok(s_x: i128, x0: i128, wd: i128, v: i64, s: i128, line: u32
     }
 }
 
+/// G162.X (M004, `004_…` line 34: X is the thread's start X for a multi-pass thread, its "конечной
+/// точки" — end — for a single pass): the X where segment ② starts at depth 0. Multi-pass: the X
+/// word; single pass (`depth` = `None`): the X word − Wd, so that the pass ends ② at the X word.
+/// The side, the checks and the path all use this X as X0.
+pub fn depth_zero_x(x_word: i128, wd: i128, depth: Option<(i64, i64)>) -> i128 {
+    match depth {
+        Some(_) => x_word,
+        None => x_word - wd,
+    }
+}
+
 /// G162.W (M004; OPEN reference): the taper Wd (diameter) is the X change over segment ②,
 /// signed, positive away from the axis; W omitted or 0: cylindrical. The thread of a pass at X
 /// `start_x` ends at `start_x + Wd`.
@@ -124,12 +137,13 @@ pub fn pass_count(p: i64, q: i64) -> u128 {
     k as u128 + split_depths(k * q, d).len() as u128
 }
 
-/// G162.A (M004; OPEN sign and Z shift): t(d) = σ·round(d·tan|A|), σ = s·sign(A). Viewed with
-/// +Z right and +X up, A turns the radial infeed counter-clockwise: an external thread (s = +1)
-/// with A > 0 shifts toward +Z. The whole pass is translated by t(d).
-pub fn z_shift(depth: i64, a_half: i64, s: i128) -> i128 {
-    let magnitude = round_mul_tan_half_degrees(depth, a_half.unsigned_abs() as u32).unwrap_or(0);
-    s * a_half.signum() as i128 * magnitude as i128
+/// G162.A (M004; OPEN sign and Z shift): t(d) = σ·round(d·tan|A|), σ = s·sign(A), A in tenths
+/// of a degree (|A| ≤ 89°, decided exactly by [`crate::tangent`]). Viewed with +Z right and +X
+/// up, A turns the radial infeed counter-clockwise: an external thread (s = +1) with A > 0
+/// shifts toward +Z. The whole pass is translated by t(d).
+pub fn z_shift(depth: i64, a_tenths: i64, s: i128) -> i128 {
+    let magnitude = round_mul_tan_tenths(depth, a_tenths.unsigned_abs() as u32).unwrap_or(0);
+    s * a_tenths.signum() as i128 * magnitude as i128
 }
 
 /// G162.B (M004): the spindle start angle of segment ②, 0.001°; B = 360° is the zero mark.
@@ -137,13 +151,16 @@ pub fn start_angle(b: i64) -> u32 {
     (b % 360_000) as u32
 }
 
-/// G162.I, G162.J (M004; OPEN continuous): the lead changes by I per J of spindle rotation; a
-/// shrinking lead stops once ≤ |I| (floor |I|). I = 0, or I < 0 with F ≤ |I| already: constant.
-pub fn lead_law(lead: i64, i: i64, j: i64) -> LeadLaw {
+/// G162.I, G162.J (M004, `004_…` lines 75–77): the lead changes by I per J of spindle rotation —
+/// in steps under `g162.lead=steps` (the letter, `stepped`), continuously under `continuous`; a
+/// shrinking lead stops once ≤ |I| (floor |I|: stepped, it steps only while above |I|). I = 0,
+/// or I < 0 with F ≤ |I| already: constant (never stepped).
+pub fn lead_law(lead: i64, i: i64, j: i64, reading: G162Lead) -> LeadLaw {
     if i == 0 || (i < 0 && lead <= -i) {
         return LeadLaw::default();
     }
-    LeadLaw { change: i, change_angle: j as u32, floor: if i < 0 { -i } else { 0 } }
+    let stepped = reading == G162Lead::Steps;
+    LeadLaw { change: i, change_angle: j as u32, floor: if i < 0 { -i } else { 0 }, stepped }
 }
 
 /// COM.LONGAXIS (M001, M002): twice the long-axis travel of a move in lead counts, from its Z
@@ -159,18 +176,35 @@ pub fn long_travel_twice(dz: i128, dxd: i128, grid: Grid) -> i128 {
     }
 }
 
-/// G162.I (M004): a growing lead must stay within the F range at the end of segment ②:
-/// J·F² + 360 000·I·s2 ≤ J·Fmax² (s2 = twice the long-axis travel, lead counts; the lead law of
-/// docs/INTERPRETATION.md "Trace"), else `GEOMETRY` on I.
-pub fn growing_lead_ok(lead: i64, i: i64, j: i64, s2: i128, grid: Grid, line: u32) -> Result<(), Alarm> {
+/// G162.I (M004): a growing lead must stay within the F range during segment ②, else
+/// `GEOMETRY` on I (s2 = twice the long-axis travel, lead counts).
+/// * `continuous`: the lead at the end of ②, J·F² + 360 000·I·s2 ≤ J·Fmax² (the lead law of
+///   docs/INTERPRETATION.md "Trace").
+/// * `steps` (the letter): [`stepped_lead_exceeds`].
+pub fn growing_lead_ok(lead: i64, i: i64, j: i64, s2: i128, grid: Grid, reading: G162Lead, line: u32) -> Result<(), Alarm> {
     if i <= 0 {
         return Ok(());
     }
     let (f, fmax, j) = (lead as i128, lead_max(grid) as i128, j as i128);
-    if j * f * f + 360_000 * i as i128 * s2 > j * fmax * fmax {
+    let exceeds = match reading {
+        G162Lead::Continuous => j * f * f + 360_000 * i as i128 * s2 > j * fmax * fmax,
+        G162Lead::Steps => stepped_lead_exceeds(f, i as i128, j, s2, fmax),
+    };
+    if exceeds {
         return Err(alarm(AlarmCode::Geometry, b'I', Rule::G162I, line));
     }
     Ok(())
+}
+
+/// G162.I under `g162.lead=steps` (docs/INTERPRETATION.md "Growing pitch bound"): the lead
+/// F + k·I is reached during ② when the travel before its step, (k·F + I·k(k − 1)/2)·J / 360 000
+/// lead counts, is less than the long-axis travel s2/2. The first step above Fmax is
+/// k* = ⌊(Fmax − F)/I⌋ + 1; it is reached — the bound fails — when
+/// (2·k*·F + I·k*·(k* − 1))·J < 360 000·s2. Exact: F, Fmax < 2^27, I ≥ 1, k*·I ≤ Fmax + I, J < 2^30,
+/// so every product stays below 2^90.
+pub fn stepped_lead_exceeds(f: i128, i: i128, j: i128, s2: i128, fmax: i128) -> bool {
+    let k = (fmax - f) / i + 1;
+    (2 * k * f + i * k * (k - 1)) * j < 360_000 * s2
 }
 
 /// G162.F (M004, the manual's example): the F a programmer writes for a pitch `pitch` measured
@@ -195,18 +229,20 @@ pub fn long_axis_pitch(pitch: i64, long: i64, short: i64) -> i64 {
 pub fn expand(c: &G162Block, config: &Config, out: &mut Out) -> Result<(), Alarm> {
     let line = c.line;
     let (sx, sz) = c.s;
+    let x0 = depth_zero_x(c.x0, c.wd, c.depth);
     let dz = cut_direction(sz, c.ze, line)?;
     leg_fits(c.v, sz, c.ze, line)?;
-    let s = side(sx, c.x0, line)?;
-    retract_side_ok(sx, c.x0, c.wd, c.v, s, line)?;
+    let s = side(sx, x0, line)?;
+    retract_side_ok(sx, x0, c.wd, c.v, s, line)?;
     if let Some((p, q)) = c.depth {
         check_max_passes(pass_count(p, q), 1, &crate::config::params(config), b'Q', line)?;
     }
     // Ze1: where the thread ② ends and the leg ③ begins.
     let ze1 = c.ze - dz * c.v as i128;
-    growing_lead_ok(c.lead, c.i, c.j, long_travel_twice(ze1 - sz, c.wd, config.grid), config.grid, line)?;
+    let reading = config.readings.g162_lead;
+    growing_lead_ok(c.lead, c.i, c.j, long_travel_twice(ze1 - sz, c.wd, config.grid), config.grid, reading, line)?;
 
-    let pass = Pass { c, s, ze1, law: lead_law(c.lead, c.i, c.j), angle: start_angle(c.b) };
+    let pass = Pass { c, x0, s, ze1, law: lead_law(c.lead, c.i, c.j, reading), angle: start_angle(c.b) };
     match c.depth {
         None => pass.emit(1, 0, Rule::G162X, out),
         Some((p, q)) => {
@@ -224,6 +260,8 @@ pub fn expand(c: &G162Block, config: &Config, out: &mut Out) -> Result<(), Alarm
 /// What every pass of one cycle shares.
 struct Pass<'a> {
     c: &'a G162Block,
+    /// X0 as [`depth_zero_x`] gives it.
+    x0: i128,
     s: i128,
     ze1: i128,
     law: LeadLaw,
@@ -238,8 +276,8 @@ impl Pass<'_> {
         let (line, s, h) = (c.line, self.s, c.h);
         out.segment(0);
         out.pass(index, PassKind::Rough, 2 * depth as i128, rule, line)?;
-        let t = z_shift(depth, c.a_half, s);
-        let bn = (c.x0 - 2 * s * depth as i128, c.s.1 + t);
+        let t = z_shift(depth, c.a_tenths, s);
+        let bn = (self.x0 - 2 * s * depth as i128, c.s.1 + t);
         out.segment(1);
         out.feed(bn.0, bn.1, h, Rule::G162Path, line)?;
         let en = (thread_end_x(bn.0, c.wd), self.ze1 + t);
@@ -256,111 +294,4 @@ impl Pass<'_> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// G162.SPLIT, the issue's example: P2.5 Q1. On the ISC grid (0.0001 mm) the manual's
-    /// sequence exactly; on ISB (0.001 mm) 2.4375 rounds half up to 2.438.
-    #[test]
-    fn p2_5_q1_depths() {
-        let isc: Vec<i64> = {
-            let (k, d) = full_passes(25_000, 10_000);
-            (1..=k).map(|n| n * 10_000).chain(split_depths(k * 10_000, d)).collect()
-        };
-        assert_eq!(isc, vec![10_000, 20_000, 22_500, 23_750, 24_375, 25_000]);
-        let (k, d) = full_passes(2_500, 1_000);
-        assert_eq!((k, d), (2, 500));
-        assert_eq!(split_depths(2_000, 500), vec![2_250, 2_375, 2_438, 2_500]);
-        assert_eq!(pass_count(2_500, 1_000), 6);
-    }
-
-    /// G162.SPLIT OPEN points: a zero remainder adds nothing; allowances below one increment
-    /// merge into the next cut; Q > P splits P itself.
-    #[test]
-    fn split_edge_cases() {
-        assert_eq!(split_depths(3_000, 0), Vec::<i64>::new());
-        assert_eq!(pass_count(3_000, 1_000), 3);
-        assert_eq!(split_depths(2, 1), vec![3]); // targets 2.5→3, 2.75→3, 2.875→3, 3
-        assert_eq!(split_depths(0, 2), vec![1, 2]); // 1, 1.5→2, 1.75→2, 2
-        assert_eq!(split_depths(0, 3), vec![2, 3]); // 1.5→2, 2.25→2, 2.625→3, 3
-        assert_eq!(split_depths(0, 500), vec![250, 375, 438, 500]); // P0.5 Q1
-        for kq in [0, 7, 1_000] {
-            for d in 1..200 {
-                let v = split_depths(kq, d);
-                assert_eq!(*v.last().unwrap(), kq + d, "ends at P");
-                assert!(v.windows(2).all(|w| w[0] < w[1]) && v[0] > kq, "strictly increasing");
-                assert!(v.len() <= 4);
-            }
-        }
-    }
-
-    /// G162.F (M004): 2 mm along a cone 50 mm long with a 20 mm diameter difference:
-    /// 2·50/√(50² + 10²) = 1.961161…: 1.9612 on the lead grid, the manual's 1.96 to two decimals.
-    #[test]
-    fn manual_pitch_example() {
-        let f = long_axis_pitch(20_000, 50_000, 10_000);
-        assert_eq!(f, 19_612);
-        assert_eq!(round_div(f as i128, 100), 196);
-        // The same in any unit of length; a straight thread keeps its pitch.
-        assert_eq!(long_axis_pitch(20_000, 50, 10), 19_612);
-        assert_eq!(long_axis_pitch(15_000, 40_000, 0), 15_000);
-        // 3-4-5: 5·4/5 = 4 exactly; 7·4/5 = 5.6 → 6; 6·4/5 = 4.8 → 5; 3·4/5 = 2.4 → 2.
-        assert_eq!(long_axis_pitch(5, 4, 3), 4);
-        assert_eq!(long_axis_pitch(7, 4, 3), 6);
-        assert_eq!(long_axis_pitch(6, 4, 3), 5);
-        assert_eq!(long_axis_pitch(3, 4, 3), 2);
-    }
-
-    /// G162.A (M004): the sign rule and the rounding, t(0.5 mm) at 30° = round(288.675) = 289.
-    #[test]
-    fn infeed_angle_sign_and_rounding() {
-        assert_eq!(z_shift(500, 60, 1), 289);
-        assert_eq!(z_shift(500, 60, -1), -289);
-        assert_eq!(z_shift(500, -60, 1), -289);
-        assert_eq!(z_shift(500, -60, -1), 289);
-        assert_eq!(z_shift(1_000, 60, 1), 577);
-        assert_eq!(z_shift(1_000, 0, 1), 0);
-        assert_eq!(z_shift(1_000, 90, 1), 1_000); // 45°
-        assert_eq!(z_shift(0, 60, 1), 0);
-    }
-
-    /// G162.I, G162.J: the lead law and where the shrinking stops.
-    #[test]
-    fn variable_pitch_law() {
-        assert_eq!(lead_law(15_000, 0, 360_000), LeadLaw::default());
-        assert_eq!(lead_law(15_000, 5_000, 180_000), LeadLaw { change: 5_000, change_angle: 180_000, floor: 0 });
-        assert_eq!(lead_law(15_000, -5_000, 180_000), LeadLaw { change: -5_000, change_angle: 180_000, floor: 5_000 });
-        // Already at or below |I|: the change has stopped before it starts.
-        assert_eq!(lead_law(5_000, -5_000, 360_000), LeadLaw::default());
-        assert_eq!(lead_law(4_000, -5_000, 360_000), LeadLaw::default());
-        assert_eq!(start_angle(360_000), 0);
-        assert_eq!(start_angle(90_000), 90_000);
-    }
-
-    /// G162.I: a growing lead may reach the F maximum at the end of ② and not beyond
-    /// (L² = F² + I·s2 per revolution: F = 9000 mm, I = 1 mm/rev).
-    #[test]
-    fn growing_lead_bound() {
-        let g = Grid::METRIC_ISB;
-        let fmax = lead_max(g) as i128;
-        // s2 chosen so that F² + I·s2 = Fmax² exactly (J = 360 000, per revolution).
-        let f = 90_000_000i128;
-        let i = 10_000i128;
-        let s2 = (fmax * fmax - f * f) / i;
-        assert_eq!((fmax * fmax - f * f) % i, 0);
-        assert!(growing_lead_ok(f as i64, i as i64, 360_000, s2, g, 1).is_ok());
-        assert_eq!(
-            growing_lead_ok(f as i64, i as i64, 360_000, s2 + 1, g, 1),
-            Err(alarm(AlarmCode::Geometry, b'I', Rule::G162I, 1))
-        );
-        assert!(growing_lead_ok(f as i64, -i as i64, 360_000, s2 * 1_000, g, 1).is_ok());
-    }
-
-    #[test]
-    fn long_axis() {
-        let g = Grid::METRIC_ISB;
-        assert_eq!(long_travel_twice(-20_000, 0, g), 400_000);
-        assert_eq!(long_travel_twice(1_000, 3_000, g), 30_000); // X long: 1.5 radius > 1
-        assert_eq!(long_travel_twice(1_000, 2_000, g), 20_000); // equal: X (COM.LONGAXIS)
-    }
-}
+mod tests;

@@ -13,7 +13,7 @@ pub struct G162;
 /// G162.FORMAT (M004): `G162 X Z H [P Q] [V] [W] [A] [F] [B] [I] [J]`, each word read as the
 /// register's table says (X and W by `x_radius`).
 const WORDS: Words = Words::of(&[
-    (b'A', Read::HalfDegrees),
+    (b'A', Read::Tenths),
     (b'B', Read::Millidegrees { lo: 0, hi: 360_000, rule: Rule::G162B }),
     F,
     (b'H', Read::Feed { hi: N, rule: Rule::G162H }),
@@ -66,7 +66,7 @@ impl Family for G162 {
             depth,
             v: v.get(b'V').unwrap_or(0),
             wd: v.get(b'W').unwrap_or(0) as i128,
-            a_half: v.get(b'A').unwrap_or(0),
+            a_tenths: v.get(b'A').unwrap_or(0),
             lead,
             b: v.get(b'B').unwrap_or(0),
             i: v.get(b'I').unwrap_or(0),

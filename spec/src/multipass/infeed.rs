@@ -3,6 +3,7 @@
 
 use super::Cycle;
 use crate::tangent::round_mul_tan_half_angle;
+use cycle_vocab::readings::ThreadZRef;
 
 /// Which flank a rough pass follows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -49,21 +50,23 @@ pub fn t(depth: i64, a: u32) -> i128 {
     round_mul_tan_half_angle(depth, a).unwrap_or(0) as i128
 }
 
-/// G76.INFEED.Z (M001) with the modes: σ = −s (positive infeed shifts +Z, negative −Z);
-/// right flank Z = A.z + σ·t(δ); centre Z = A.z + σ·t(T); left flank
-/// Z = A.z + σ·(2·t(T) − t(δ)), the mirror of the right flank about the centre.
-pub fn infeed_z(a_z: i128, s: i128, t_depth: i128, t_last: i128, flank: Flank) -> i128 {
+/// G76.INFEED.Z (M001, M000) with the modes, under the declared reading `thread.zref`; σ = −s
+/// (positive infeed shifts +Z, negative −Z); t(δ) this pass's shift, t(T) the last rough pass's.
+/// * `start` (the letter: one reference point B at the start's Z, one formula Z start ± X depth
+///   × tan(a/2), `001_…` line 117, `000_…` lines 138, 169–181): right flank Z = A.z + σ·t(δ);
+///   centre Z = A.z (radial along B's line); left flank Z = A.z − σ·t(δ).
+/// * `groove` (the reading before): right flank A.z + σ·t(δ); centre A.z + σ·t(T); left flank
+///   A.z + σ·(2·t(T) − t(δ)), the mirror of the right flank about the centre, so every mode
+///   ends its last rough pass on the same groove.
+pub fn infeed_z(a_z: i128, s: i128, t_depth: i128, t_last: i128, flank: Flank, zref: ThreadZRef) -> i128 {
     let sigma = -s;
-    match flank {
-        Flank::Right => a_z + sigma * t_depth,
-        Flank::Centre => a_z + sigma * t_last,
-        Flank::Left => a_z + sigma * (2 * t_last - t_depth),
+    match (zref, flank) {
+        (_, Flank::Right) => a_z + sigma * t_depth,
+        (ThreadZRef::Start, Flank::Centre) => a_z,
+        (ThreadZRef::Start, Flank::Left) => a_z - sigma * t_depth,
+        (ThreadZRef::Groove, Flank::Centre) => a_z + sigma * t_last,
+        (ThreadZRef::Groove, Flank::Left) => a_z + sigma * (2 * t_last - t_depth),
     }
-}
-
-/// G76.FINISH.Z (M001): finishing passes start at the Z of the last rough pass, A.z + σ·t(T).
-pub fn finish_z(a_z: i128, s: i128, t_last: i128) -> i128 {
-    a_z - s * t_last
 }
 
 #[cfg(test)]
@@ -79,9 +82,29 @@ mod tests {
         // a = 45: tan 22.5° = 0.41421…; 1.8 → 0.746, 2.5 → 1.036
         assert_eq!(t(1_800, 45), 746);
         assert_eq!(t(2_500, 45), 1_036);
-        assert_eq!(infeed_z(10_000, 1, 746, 1_036, Flank::Right), 9_254);
-        assert_eq!(infeed_z(10_000, 1, 746, 1_036, Flank::Left), 10_000 - 1_326);
-        assert_eq!(infeed_z(10_000, -1, 746, 1_036, Flank::Centre), 11_036);
+        let g = ThreadZRef::Groove;
+        assert_eq!(infeed_z(10_000, 1, 746, 1_036, Flank::Right, g), 9_254);
+        assert_eq!(infeed_z(10_000, 1, 746, 1_036, Flank::Left, g), 10_000 - 1_326);
+        assert_eq!(infeed_z(10_000, -1, 746, 1_036, Flank::Centre, g), 11_036);
+    }
+
+    /// `thread.zref=start` (the letter, the default): every mode measured from A.z; the right
+    /// flank is the same under both readings.
+    #[test]
+    fn start_reference() {
+        let st = ThreadZRef::Start;
+        assert_eq!(ThreadZRef::default(), st);
+        assert_eq!(infeed_z(10_000, 1, 746, 1_036, Flank::Right, st), 9_254);
+        assert_eq!(infeed_z(10_000, 1, 746, 1_036, Flank::Centre, st), 10_000);
+        assert_eq!(infeed_z(10_000, 1, 746, 1_036, Flank::Left, st), 10_746);
+        assert_eq!(infeed_z(10_000, -1, 746, 1_036, Flank::Left, st), 9_254);
+        assert_eq!(infeed_z(10_000, -1, 746, 1_036, Flank::Centre, st), 10_000);
+        for s in [-1, 1] {
+            for t in [0, 746] {
+                let right = |zref| infeed_z(10_000, s, t, 1_036, Flank::Right, zref);
+                assert_eq!(right(ThreadZRef::Start), right(ThreadZRef::Groove));
+            }
+        }
     }
 
     #[test]

@@ -21,7 +21,7 @@ use crate::tangent::round_mul_tan_degrees;
 use crate::words::{alarm, N};
 use crate::config::{params, Params};
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Grid, PassKind, Rule};
-use infeed::{finish_z, flank, infeed_x, infeed_z, t};
+use infeed::{flank, infeed_x, infeed_z, t};
 use schedule::{rough_passes, DepthMode, TooMany};
 
 /// Which multi-pass cycle.
@@ -76,7 +76,7 @@ pub struct SecondBlock {
     pub k: i64,
     /// Q(Δd), first cut, radius.
     pub dd: i64,
-    /// J and K pull-out words (not kept).
+    /// J and K pull-out words: G76 as written (not kept), G78 the modal values (written or kept).
     pub j: Option<i64>,
     pub k_pull: Option<i64>,
     /// Lead, lead counts.
@@ -86,7 +86,7 @@ pub struct SecondBlock {
 
 /// G76.FORMAT (M001) / G78.MODE (M000) / F76.FORMAT (M003): the digits of P(m)(r)(a) as written in a first block.
 /// m = 0 is `OUT OF RANGE` on P (G76.FINISH, OPEN); the G78 mode (middle digits) > 4 is `OUT OF
-/// RANGE` on P (G78.MODE); under `fanuc` the tool angle must be 80, 60, 55, 30, 29 or 0
+/// RANGE` on P (G78.MODE); under `fanuc` the tool angle must be 80, 60, 55, 40, 30, 29 or 0
 /// (F76.FORMAT).
 pub fn check_p_digits(cycle: Cycle, p: i64, dialect: Dialect, line: u32) -> Result<(), Alarm> {
     let (m, mid, a) = p_digits(p);
@@ -108,9 +108,9 @@ pub fn p_digits(p: i64) -> (u32, u32, u32) {
     (p / 10_000, (p / 100) % 100, p % 100)
 }
 
-/// F76.FORMAT (M003): the FANUC tool angles.
+/// F76.FORMAT (M003, `003_…` line 5: "牙顶角<80、60、55、40、30、29、0>"): the FANUC tool angles.
 pub fn fanuc_angle(a: u32) -> bool {
-    matches!(a, 80 | 60 | 55 | 30 | 29 | 0)
+    matches!(a, 80 | 60 | 55 | 40 | 30 | 29 | 0)
 }
 
 /// PRJ.MAXPASS (PRJ): `passes × starts` thread cuts must not exceed `max_passes` (1…1 000 000);
@@ -299,17 +299,22 @@ pub fn expand(cycle: Cycle, first: &FirstBlock, second: &SecondBlock, config: &C
     // Emission.
     let t_last = t(k - set.d, set.a);
     let cut = Cut { a: (ax, az), i, w, s, lead: second.lead, e: set.e, pull, l: set.l, cycle, line };
+    let zref = config.readings.thread_zref;
     let mut index: u32 = 0;
+    let mut last_z = az;
     for (n, pass) in rough.iter().enumerate() {
         index += 1;
         let fl = flank(cycle, set.mode, n as u64 + 1);
-        let bn = (infeed_x(cx, s, k, pass.depth), infeed_z(az, s, t(pass.depth, set.a), t_last, fl));
+        let bn = (infeed_x(cx, s, k, pass.depth), infeed_z(az, s, t(pass.depth, set.a), t_last, fl, zref));
+        last_z = bn.1;
         out.begin_cut(cut.long());
         out.pass(index, PassKind::Rough, 2 * pass.depth as i128, pass.rule, line)?;
         cut.emit(bn, out)?;
     }
-    // G76.FINISH: m passes at depth k, the first FINISH, the rest SPRING; G76.FINISH.Z.
-    let bn = (infeed_x(cx, s, k, k), finish_z(az, s, t_last));
+    // G76.FINISH: m passes at depth k, the first FINISH, the rest SPRING. G76.FINISH.Z
+    // (`000_…` line 126: "精车 Z 轴起切点与最后一刀粗车一致"): at the Z of the last rough pass, under
+    // either `thread.zref` (under `groove` that is A.z + σ·t(T) in every mode).
+    let bn = (infeed_x(cx, s, k, k), last_z);
     for f in 0..set.m {
         index += 1;
         let kind = if f == 0 { PassKind::Finish } else { PassKind::Spring };

@@ -7,11 +7,31 @@ use crate::lex::Number;
 use crate::words::{alarm, integer, Read, F, I_TPI, N, U, W, X, Z};
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Rule};
 
-/// The first-block memory of G76 and of G78 (kept separately).
+/// The first-block memory of G76 and of G78 (kept separately), and G78's modal J and K.
 #[derive(Debug, Default)]
 pub struct Multipass {
     first76: FirstBlock,
     first78: FirstBlock,
+    pull78: KeptPullout,
+}
+
+/// G78.PULLOUT (M000, `000_…` lines 59 and 61: J and K "模态指令", modal): the J and the K of the
+/// last G78 second block that wrote each, kept for the whole program, apart from G92's. G76's J
+/// and K are not kept (OPEN: M001 does not call them modal).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct KeptPullout {
+    pub j: Option<i64>,
+    pub k: Option<i64>,
+}
+
+impl KeptPullout {
+    /// A G78 second block's J and K: each word written replaces the kept one; the values the
+    /// block uses are the kept ones after that.
+    pub fn take(&mut self, j: Option<i64>, k: Option<i64>) -> (Option<i64>, Option<i64>) {
+        self.j = j.or(self.j);
+        self.k = k.or(self.k);
+        (self.j, self.k)
+    }
 }
 
 /// G76.FORMAT / G78.MODE / F76.FORMAT: P(m)(r)(a) of a first block, six digits without a
@@ -123,6 +143,10 @@ impl Multipass {
         let Some(dd) = v.get(b'Q') else {
             return Err(alarm(AlarmCode::MissingWord, b'Q', Rule::G76Required, line));
         };
+        let (j, k_pull) = match cycle {
+            Cycle::G76 => (v.get(b'J'), v.get(b'K')),
+            Cycle::G78 => self.pull78.take(v.get(b'J'), v.get(b'K')),
+        };
         let a = st.position();
         let (x, z) = st.end_point(v);
         let second = SecondBlock {
@@ -131,8 +155,8 @@ impl Multipass {
             i: v.get(b'R').unwrap_or(0) as i128,
             k,
             dd,
-            j: v.get(b'J'),
-            k_pull: v.get(b'K'),
+            j,
+            k_pull,
             lead,
             line,
         };
