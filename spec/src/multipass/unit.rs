@@ -123,6 +123,7 @@ impl Multipass {
         let Some(dd) = v.get(b'Q') else {
             return Err(alarm(AlarmCode::MissingWord, b'Q', Rule::G76Required, line));
         };
+        st.missing_words_checked()?;
         let a = st.position();
         let (x, z) = st.end_point(v);
         let second = SecondBlock {
