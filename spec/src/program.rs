@@ -78,8 +78,9 @@ pub struct Machine<'c> {
     pub in_subprogram: bool,
 }
 
-/// Words every block accepts, without effect (PRJ.MODAL): N, O, M, S, T (G and M are checked
-/// as codes).
+/// Words every block accepts (PRJ.MODAL): N, O, M, S, T (G and M are checked as codes; S is the
+/// spindle's, [`crate::spindle`]; N, O, T have no effect). M98 / M99 blocks take fewer
+/// ([`crate::sub::block`]).
 const ALWAYS: &[u8] = b"MNOST";
 
 /// G00 / G01 words: X U Z W F; under `nc201` X Z F (NC201.ABSINC: U and W are no incremental
