@@ -9,7 +9,7 @@
 //! | module | rules |
 //! |---|---|
 //! | [`config`] | COM.RANGES of the start point, parameter ranges (line 0) |
-//! | [`program`] | PRJ.MODAL, PRJ.WORD, PRJ.SUPPORTED, PRJ.DIALECT, COM.ABSINC, G163, check order |
+//! | [`program`], [`step2`] | PRJ.MODAL, PRJ.WORD, PRJ.SUPPORTED, PRJ.DIALECT, COM.ABSINC, G163, check order |
 //! | [`family`] | the one interface of the cycle families and their table |
 //! | [`lex`] | PRJ.LEX, PRJ.WORD: the spec's own reader of program text |
 //! | [`words`] | COM.UNITS, COM.RANGES, COM.LEAD, F76.MICRONS: exact values of words |
@@ -61,6 +61,7 @@ pub mod program;
 pub mod pullout;
 pub mod single_cut;
 pub mod spindle;
+pub mod step2;
 pub mod stock_removal;
 pub mod sub;
 pub mod tangent;

@@ -18,6 +18,7 @@ use crate::family::{self, BlockIn, Family, Kind, Source, State, Values, Words};
 use crate::lex::{Block, Number};
 use crate::operator::note::{scope_of_cycle, Scope};
 use crate::spindle;
+use crate::step2::{conflicts, two_motion_codes, words_allowed, ALWAYS};
 use crate::sub::{self, Call, SubCode};
 use crate::tnrc::{self, Side};
 use crate::words::{alarm, Read, F, U, W, X, Z};
@@ -77,11 +78,6 @@ pub struct Machine<'c> {
     /// SUB.RETURN: a subprogram is running (M99 is its end, not `UNSUPPORTED`).
     pub in_subprogram: bool,
 }
-
-/// Words every block accepts (PRJ.MODAL): N, O, M, S, T (G and M are checked as codes; S is the
-/// spindle's, [`crate::spindle`]; N, O, T have no effect). M98 / M99 blocks take fewer
-/// ([`crate::sub::block`]).
-const ALWAYS: &[u8] = b"MNOST";
 
 /// G00 / G01 words: X U Z W F; under `nc201` X Z F (NC201.ABSINC: U and W are no incremental
 /// addresses).
@@ -363,17 +359,6 @@ impl<'c> Machine<'c> {
     }
 }
 
-/// PRJ.WORD (PRJ), F76.FORMAT (M003): the words the block's kind accepts, checked in
-/// alphabetical order.
-fn words_allowed(b: &Block, words: &Words) -> Result<(), Alarm> {
-    for letter in b.letters() {
-        if !ALWAYS.contains(&letter) && words.read(letter).is_none() {
-            return Err(alarm(AlarmCode::WordNotAllowed, letter, words.refusal(letter), b.line));
-        }
-    }
-    Ok(())
-}
-
 /// The kind of a family's block: its code, whether it has axis words, and whether P or Q.
 fn kind_of(b: &Block, g: u32) -> Kind {
     let letters = b.letters().iter().filter(|l| l.is_ascii_uppercase()).fold(0u32, |m, &l| m | 1 << (l - b'A'));
@@ -405,44 +390,4 @@ pub fn code_value(n: &Number) -> Option<u64> {
         return Some(0);
     }
     n.digits.parse().ok()
-}
-
-/// PRJ.WORD (PRJ): two motion/cycle codes in one block are a `CONFLICT` on G; under `nc201`
-/// (NC201.ABSINC, M004) so are two of G90/G91, checked right after.
-fn two_motion_codes(b: &Block, dialect: Dialect, motion_codes: usize) -> Result<(), Alarm> {
-    let line = b.line;
-    if motion_codes > 1 {
-        return Err(alarm(AlarmCode::Conflict, b'G', Rule::PrjWord, line));
-    }
-    if dialect == Dialect::Nc201 {
-        let absinc = b.g_codes().filter(|g| matches!(code_value(g), Some(90 | 91))).count();
-        if absinc > 1 {
-            return Err(alarm(AlarmCode::Conflict, b'G', Rule::Nc201AbsInc, line));
-        }
-    }
-    Ok(())
-}
-
-/// COM.ABSINC, COM.LEAD (M001, M002), ARC.FORMAT (M003): X with U; Z with W; in an arc block
-/// (G02/G03, written or modal) R with I or K (`CONFLICT` on R); F with I in a thread block
-/// (G92, G76, G78, G32, G33, G34, written or modal), where I is threads per inch. Under `nc201`
-/// U, W and I are no incremental or lead addresses, so the pair conflicts do not exist there.
-fn conflicts(b: &Block, dialect: Dialect, thread: bool, arc: bool) -> Result<(), Alarm> {
-    let line = b.line;
-    if dialect == Dialect::Nc201 {
-        return Ok(());
-    }
-    if b.has(b'X') && b.has(b'U') {
-        return Err(alarm(AlarmCode::Conflict, b'U', Rule::ComAbsInc, line));
-    }
-    if b.has(b'Z') && b.has(b'W') {
-        return Err(alarm(AlarmCode::Conflict, b'W', Rule::ComAbsInc, line));
-    }
-    if arc && b.has(b'R') && (b.has(b'I') || b.has(b'K')) {
-        return Err(alarm(AlarmCode::Conflict, b'R', Rule::ArcFormat, line));
-    }
-    if thread && b.has(b'F') && b.has(b'I') {
-        return Err(alarm(AlarmCode::Conflict, b'I', Rule::ComLead, line));
-    }
-    Ok(())
 }
