@@ -170,6 +170,13 @@ pub const PROGRAMS: &[Program] = &[
     program!("tests/programs", "g75_relief_against_step", Gsk, Metric, [G75Relief, G75Column], reading "g75.relief" = "against-step"),
     program!("tests/programs", "g83_edges", Gsk, Metric, [G83Peck, G83Format]),
     program!("tests/programs", "g84_g99", Gsk, Metric, [G84Path, G84Format, G80]),
+    program!("tests/programs", "g84_g97", Gsk, Metric, [G84Format, G84Path, G50Smax, G96Speed]),
+    program!("tests/programs", "g84_g50_s", Gsk, Metric, [G84Format, G50Smax], alarm MissingWord b'S' G84Format),
+    program!("tests/programs", "g96_spindle", Gsk, Metric, [G96Smax, G96Speed, G96Rapid, G50Smax, G71Layer]),
+    program!("tests/programs", "g96_rapid", Gsk, Metric, [G96Rapid, G96Smax], alarm Unsupported b'G' G96Rapid),
+    program!("tests/programs", "sub_call", Gsk, Metric, [SubCall, SubFind, SubReturn, G92Modal]),
+    program!("tests/programs", "sub_repeat", Gsk, Metric, [SubCall, SubReturn, G90Path]),
+    program!("tests/programs", "sub_nested", Gsk, Metric, [SubNest, SubCall, SubReturn]),
 ];
 
 /// The program named `name` (file stem).

@@ -219,6 +219,7 @@ pub fn block(st: &mut State, v: &Values, cw: bool, moving: bool, line: u32) -> R
     let Some(by) = by(v) else {
         return Err(alarm(AlarmCode::MissingWord, b'R', Rule::ArcFormat, line));
     };
+    st.missing_words_checked()?;
     let s = st.position();
     let (x, z) = st.end_point(v);
     let e = (x.unwrap_or(s.0), z.unwrap_or(s.1));

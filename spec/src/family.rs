@@ -11,6 +11,7 @@ use crate::emit::Out;
 use crate::lex::{Block, Blocks};
 use crate::words::Read;
 use cycle_vocab::{Alarm, Config, Dialect, Rule};
+use std::rc::Rc;
 
 /// A G code of a family and the dialects that have it; under any other dialect it is
 /// `UNSUPPORTED CODE`, rule PRJ.DIALECT.
@@ -101,36 +102,73 @@ pub trait Family {
     fn execute(&mut self, st: &mut State, b: &BlockIn, src: &mut Source) -> Result<(), Alarm>;
 }
 
-/// The program being expanded, as the interpreter reads it (CNT.FIND, CNT.FLOW): the stream of
-/// blocks still to come, and the whole text, which can be read again from its start. Nothing is
-/// collected: a cycle that needs the blocks before it lexes the text again.
+/// The program a block stands in, as the interpreter reads it (CNT.FIND, CNT.FLOW, SUB.FIND):
+/// the stream of blocks still to come, and the blocks before the one being executed. The main
+/// program is its text, lexed as it is read (a cycle that needs the blocks before it lexes the
+/// text again); a subprogram run is the subprogram area's blocks, read whole at the call, from
+/// its O block on ("the contour blocks … are found in the program (main or subprogram) the cycle
+/// block stands in").
 pub struct Source<'p> {
-    text: &'p [u8],
-    blocks: Blocks<'p>,
-    /// How many blocks have been handed out; the block being executed is the last of them.
-    taken: u64,
+    stream: Stream<'p>,
+}
+
+enum Stream<'p> {
+    /// The main program: the whole text, from its start.
+    Main {
+        text: &'p [u8],
+        blocks: Blocks<'p>,
+        /// How many blocks have been handed out; the block being executed is the last of them.
+        taken: u64,
+    },
+    /// One run of a subprogram: the area's blocks, the run starting at `start` (its O block);
+    /// `next` is the index of the next block to hand out.
+    Subprogram { area: Rc<[Block]>, start: usize, next: usize },
 }
 
 impl<'p> Source<'p> {
+    /// The main program `text`.
     pub fn new(text: &'p [u8]) -> Source<'p> {
-        Source { text, blocks: Blocks::new(text), taken: 0 }
+        Source { stream: Stream::Main { text, blocks: Blocks::new(text), taken: 0 } }
+    }
+
+    /// SUB.RETURN: a run of the subprogram whose O block is `area[start]`.
+    pub fn subprogram(area: Rc<[Block]>, start: usize) -> Source<'p> {
+        Source { stream: Stream::Subprogram { area, start, next: start } }
     }
 
     /// The next block of the program (PRJ.LEX); `None` at its end or after a lexing alarm.
     /// Blocks a cycle takes from here (its contour) are not read again by the interpreter.
     pub fn next_block(&mut self) -> Option<Result<Block, Alarm>> {
-        let next = self.blocks.next();
-        if matches!(next, Some(Ok(_))) {
-            self.taken = self.taken.saturating_add(1);
+        match &mut self.stream {
+            Stream::Main { blocks, taken, .. } => {
+                let next = blocks.next();
+                if matches!(next, Some(Ok(_))) {
+                    *taken = taken.saturating_add(1);
+                }
+                next
+            }
+            Stream::Subprogram { area, next, .. } => {
+                let block = area.get(*next).cloned()?;
+                *next += 1;
+                Some(Ok(block))
+            }
         }
-        next
     }
 
-    /// The blocks that stand before the last one handed out, in program order, read again from
-    /// the start of the text. They were read once without an alarm, so they read again alike.
-    pub fn before(&self) -> impl Iterator<Item = Block> + 'p {
-        let n = usize::try_from(self.taken.saturating_sub(1)).unwrap_or(usize::MAX);
-        Blocks::new(self.text).take(n).map_while(Result::ok)
+    /// The blocks that stand before the last one handed out, in program order: in the main
+    /// program from its start, read again from the text (they were read once without an alarm,
+    /// so they read again alike); in a subprogram from its O block.
+    pub fn before(&self) -> Box<dyn Iterator<Item = Block> + '_> {
+        match &self.stream {
+            Stream::Main { text, taken, .. } => {
+                let n = usize::try_from(taken.saturating_sub(1)).unwrap_or(usize::MAX);
+                Box::new(Blocks::new(text).take(n).map_while(Result::ok))
+            }
+            Stream::Subprogram { area, start, next } => {
+                let end = next.saturating_sub(1).max(*start);
+                Box::new(area[*start..end].iter().cloned())
+            }
+        }
     }
 }
 
@@ -186,19 +224,24 @@ pub struct State<'c> {
     pub side: crate::tnrc::Side,
     /// G84.FORMAT: what rigid tapping needs from the blocks before it.
     pub tapping: Tapping,
+    /// G50.SMAX, G96.*: the spindle state (docs/INTERPRETATION.md, "Spindle speed").
+    pub spindle: crate::spindle::Spindle,
+    /// A check the interpreter defers to the end of the block's check step 4 (G96.SMAX: "after
+    /// the block's own missing words; before any motion of the block"), raised by
+    /// [`State::missing_words_checked`].
+    pub deferred: Option<Alarm>,
 }
 
 /// The state G84 reads (docs/INTERPRETATION.md, "G83 and G84"): "M29 must have been written in
 /// this block or since the last G80/G84 cycle"; "G98, G99 … the project keeps which one is in
-/// force (G99 at the start) only for G84's lead"; "S is the last S word".
+/// force (G99 at the start) only for G84's lead". The speed is the spindle state's
+/// ([`crate::spindle::Spindle`]).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Tapping {
     /// M29 armed rigid tapping (until G80 or a G84 cycle).
     pub rigid: bool,
     /// G98 (feed per minute) is in force; `false`: G99 (feed per revolution), the start.
     pub per_minute: bool,
-    /// The last S word of an executed block, exactly as written (its value is checked by G84).
-    pub speed: Option<crate::lex::Number>,
 }
 
 impl State<'_> {
@@ -210,6 +253,16 @@ impl State<'_> {
     /// The current position (X diameter, Z), increments.
     pub fn position(&self) -> (i128, i128) {
         (self.out.x as i128, self.out.z as i128)
+    }
+
+    /// Check step 4 ends here: every family calls this right after its own missing-word checks,
+    /// before the checks of step 5 and any motion; the interpreter calls it after the block for
+    /// blocks that have none. Raises the deferred check (G96.SMAX), once.
+    pub fn missing_words_checked(&mut self) -> Result<(), Alarm> {
+        match self.deferred.take() {
+            Some(a) => Err(a),
+            None => Ok(()),
+        }
     }
 
     /// COM.LEAD (M001, M002): F and I set one modal feed value (never both in a thread block:

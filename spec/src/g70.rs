@@ -57,6 +57,7 @@ impl Family for G70 {
         let Some(nf) = v.get(b'Q') else {
             return Err(alarm(AlarmCode::MissingWord, b'Q', Rule::CntPq, line));
         };
+        st.missing_words_checked()?;
         let s = st.position();
         let blocks = contour::behind(src, ns, nf, line)?;
         let c = read(&blocks, s, &Reader { config: st.config, side: st.side })?;

@@ -140,6 +140,7 @@ fn cycle(kept: Kept, format_b: bool, st: &mut State, b: &BlockIn, src: &mut Sour
         let dk = kept.dk.unwrap_or(params.p5136_escape_z);
         (di, dk, kept.d.unwrap_or(params.p5137_count), b'R')
     };
+    st.missing_words_checked()?;
     let a = st.position();
     let blocks = contour::ahead(src, ns, nf, line)?;
     let contour = read(&blocks, a, &Reader { config: st.config, side: st.side })?;

@@ -56,6 +56,7 @@ impl Family for G83 {
         let Some(feed) = st.feed else {
             return Err(alarm(AlarmCode::MissingWord, b'F', Rule::ComLead, line));
         };
+        st.missing_words_checked()?;
         let lv = Levels::of(st, v);
         if lv.c() == 0 {
             return Err(alarm(AlarmCode::Geometry, b'Z', Rule::G83Format, line));

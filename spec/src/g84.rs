@@ -4,13 +4,13 @@
 //! `M29 S…; G84 Z(W) R P F`: from the initial level a rapid to the R level, a synchronized move
 //! to the bottom, a dwell, the spindle reversed, the synchronized move back, the spindle forward
 //! again, a rapid to the initial level (G84.PATH). Rigid tapping only (M29, G84.FORMAT). The
-//! lead is F under G99, F / S under G98. One-shot (CYC.ONESHOT). The seed's line
+//! lead is F under G99, F / S under G98 (S the rpm in force under G97). One-shot (CYC.ONESHOT). The seed's line
 //! `G98M29S60G84Z-21R2F60G80` is `corpus/g84_example.nc`.
 
 use crate::exact::round_div;
 use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
 use crate::g83::{Levels, P, R};
-use crate::words::{alarm, in_range, whole, F, W, Z};
+use crate::words::{alarm, F, W, Z};
 use cycle_vocab::{Alarm, AlarmCode, Dialect, PassKind, Rule, SpindleState};
 
 /// G84 as a family of the interpreter; its state (M29, G98/G99, S) is the machine's
@@ -44,6 +44,7 @@ impl Family for G84 {
         let Some(feed) = st.feed else {
             return Err(alarm(AlarmCode::MissingWord, b'F', Rule::ComLead, line));
         };
+        st.missing_words_checked()?;
         if !st.tapping.rigid {
             return Err(alarm(AlarmCode::Unsupported, b'G', Rule::G84Format, line));
         }
@@ -60,18 +61,15 @@ impl Family for G84 {
 
 /// G84.FORMAT (M003, OPEN): "under G99 (feed per revolution, the default mode) the lead is F;
 /// under G98 (feed per minute) it is F / S exactly (F = lead × speed, the seed), rounded once to
-/// the lead grid; S is the last S word (an integer 1 … 99 999 rpm: else `OUT OF RANGE` on S, rule
-/// G84.FORMAT; none → `MISSING WORD S`)". A decimal point in S is `NOT INTEGER` (COM.RANGES, as
-/// every integer word). A lead that rounds to 0 (F < S/2 lead counts) is no lead: `OUT OF RANGE`
-/// on F, rule G84.FORMAT.
+/// the lead grid"; S is "the rpm in force" — the last S written under G97, never a G50 S nor a
+/// G96 S; under G96 `UNSUPPORTED` on G ([`crate::spindle::Spindle::tapping_rpm`]). A decimal point
+/// in S was `NOT INTEGER` where it was written. A lead that rounds to 0 (F < S/2 lead counts) is
+/// no lead: `OUT OF RANGE` on F, rule G84.FORMAT.
 fn lead(st: &State, feed: i64, line: u32) -> Result<i64, Alarm> {
     if !st.tapping.per_minute {
         return Ok(feed);
     }
-    let Some(s) = &st.tapping.speed else {
-        return Err(alarm(AlarmCode::MissingWord, b'S', Rule::G84Format, line));
-    };
-    let s = in_range(&whole(s, b'S', line)?, 1, 99_999, b'S', Rule::G84Format, line)?;
+    let s = st.spindle.tapping_rpm(line)?;
     let lead = round_div(i128::from(feed), i128::from(s));
     match i64::try_from(lead) {
         Ok(l) if l > 0 => Ok(l),

@@ -85,6 +85,7 @@ impl Family for G92 {
         let Some(lead) = st.feed else {
             return Err(alarm(AlarmCode::MissingWord, b'F', Rule::ComLead, line));
         };
+        st.missing_words_checked()?;
         let a = st.position();
         let (x, z) = st.end_point(v);
         let dx = x.or(self.run.end_x).unwrap_or(a.0);

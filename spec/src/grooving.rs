@@ -138,6 +138,7 @@ pub fn second_block(ax: Axes, e: Option<i64>, st: &mut State, b: &BlockIn) -> Re
     let Some(feed) = st.feed else {
         return Err(alarm(AlarmCode::MissingWord, b'F', Rule::ComLead, line));
     };
+    st.missing_words_checked()?;
     let params = st.params();
     let a = st.position();
     let (ex, ez) = st.end_point(v);

@@ -9,7 +9,7 @@
 //! | module | rules |
 //! |---|---|
 //! | [`config`] | COM.RANGES of the start point, parameter ranges (line 0) |
-//! | [`program`] | PRJ.MODAL, PRJ.WORD, PRJ.SUPPORTED, PRJ.DIALECT, COM.ABSINC, check order |
+//! | [`program`], [`step2`] | PRJ.MODAL, PRJ.WORD, PRJ.SUPPORTED, PRJ.DIALECT, COM.ABSINC, G163, check order |
 //! | [`family`] | the one interface of the cycle families and their table |
 //! | [`lex`] | PRJ.LEX, PRJ.WORD: the spec's own reader of program text |
 //! | [`words`] | COM.UNITS, COM.RANGES, COM.LEAD, F76.MICRONS: exact values of words |
@@ -21,6 +21,8 @@
 //! | [`thread_moves`] | G32, G33, G34 (M003) |
 //! | [`g90`], [`g94`], [`single_cut`] | G90.*, G94.* (M003): single cutting cycles and their runs |
 //! | [`g50`], [`tnrc`] | G50.COORD, G50.SMAX; TNRC.* (M003): the program words of the contour cycles |
+//! | [`spindle`] | G50.SMAX, G96.SPEED, G96.SMAX, G96.RAPID (M003): the spindle state |
+//! | [`sub`] | SUB.CALL, SUB.FIND, SUB.RETURN, SUB.NEST, PRJ.MAXPASS: subprograms M98, M99 |
 //! | [`arc`] | ARC.* (M003): G02/G03, their centres, the tolerance, the sweep |
 //! | [`contour`] | CNT.* (M003): finding, checking and running the contour N(ns) … N(nf) |
 //! | [`g70`] | G70.* (M003): finishing |
@@ -58,7 +60,10 @@ pub mod operator;
 pub mod program;
 pub mod pullout;
 pub mod single_cut;
+pub mod spindle;
+pub mod step2;
 pub mod stock_removal;
+pub mod sub;
 pub mod tangent;
 pub mod thread_moves;
 pub mod tnrc;
@@ -101,22 +106,10 @@ pub fn expand_into(program: &[u8], config: &Config, sink: &mut dyn FnMut(Event) 
     run_blocks(program, &mut machine)
 }
 
-/// Runs every block of `program` on `machine`, up to the program's end, its first alarm, or the
-/// block in which the sink stopped.
+/// Runs every block of `program` on `machine` — the main program and the subprograms it calls
+/// ([`sub`]) — up to the program's end, its first alarm, or the block in which the sink stopped.
 fn run_blocks(program: &[u8], machine: &mut program::Machine) -> Option<Alarm> {
-    let mut src = family::Source::new(program);
-    while let Some(block) = src.next_block() {
-        let result = match block {
-            Ok(b) => machine.block(&b, &mut src),
-            Err(a) => Err(a),
-        };
-        match result {
-            Ok(false) if !machine.stopped() => {}
-            Ok(_) => break, // M02 / M30: nothing after this block is read; or the sink stopped
-            Err(a) => return Some(a),
-        }
-    }
-    None
+    sub::run(program, machine)
 }
 
 #[cfg(test)]
@@ -147,6 +140,10 @@ mod tests_operator;
 mod tests_operator_cycles;
 #[cfg(test)]
 mod tests_props;
+#[cfg(test)]
+mod tests_spindle;
+#[cfg(test)]
+mod tests_sub;
 #[cfg(test)]
 mod tests_threads_a;
 #[cfg(test)]

@@ -10,12 +10,16 @@
 //! reader, [`crate::lex`]); (2) G and M codes supported, then conflicts (two motion codes;
 //! G90/G91; X/U, Z/W, F/I in thread blocks, none under `nc201`), then words allowed in
 //! alphabetical order; (3) each word's value in alphabetical order; (4) missing words and
-//! (5) the cycle's own checks, in the family's handler.
+//! (5) the cycle's own checks, in the family's handler. M98 / M99 blocks ([`crate::sub`]) and
+//! the spindle state ([`crate::spindle`]) are the interpreter's too.
 
 use crate::emit::{Out, Sink};
 use crate::family::{self, BlockIn, Family, Kind, Source, State, Values, Words};
 use crate::lex::{Block, Number};
 use crate::operator::note::{scope_of_cycle, Scope};
+use crate::spindle;
+use crate::step2::{conflicts, two_motion_codes, words_allowed, ALWAYS};
+use crate::sub::{self, Call, SubCode};
 use crate::tnrc::{self, Side};
 use crate::words::{alarm, Read, F, U, W, X, Z};
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Rule, Units};
@@ -42,16 +46,38 @@ enum Code {
     Family(usize, u32),
 }
 
+/// What follows a block (PRJ.MODAL, SUB.*).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Flow {
+    /// The next block of the same program.
+    Next,
+    /// M02 / M30: the program ends (in the main program or a subprogram).
+    End,
+    /// M98: a call, checked at steps 2–4 (the call's own checks are [`crate::sub`]'s).
+    Call(Call),
+    /// M99: the end of one run of the subprogram.
+    Return,
+}
+
+/// The M code of a block, as it bears on the flow.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum MCode {
+    /// None, or one without effect on the flow.
+    Other,
+    /// M02, M30.
+    End,
+    /// M98, M99.
+    Sub(SubCode),
+}
+
 /// The machine between blocks.
 pub struct Machine<'c> {
     pub st: State<'c>,
     motion: Motion,
     families: Vec<Box<dyn Family>>,
+    /// SUB.RETURN: a subprogram is running (M99 is its end, not `UNSUPPORTED`).
+    pub in_subprogram: bool,
 }
-
-/// Words every block accepts, without effect (PRJ.MODAL): N, O, M, S, T (G and M are checked
-/// as codes).
-const ALWAYS: &[u8] = b"MNOST";
 
 /// G00 / G01 words: X U Z W F; under `nc201` X Z F (NC201.ABSINC: U and W are no incremental
 /// addresses).
@@ -62,8 +88,17 @@ impl<'c> Machine<'c> {
     /// PRJ.MODAL (PRJ): the machine starts at the configured start point, in G00, with no feed.
     pub fn new(config: &'c Config, sink: Sink<'c>) -> Machine<'c> {
         let out = Out::new(config.start_x, config.start_z, sink);
-        let st = State { config, out, feed: None, incremental: false, side: Side::Off, tapping: Default::default() };
-        Machine { st, motion: Motion::G00, families: family::table() }
+        let st = State {
+            config,
+            out,
+            feed: None,
+            incremental: false,
+            side: Side::Off,
+            tapping: Default::default(),
+            spindle: Default::default(),
+            deferred: None,
+        };
+        Machine { st, motion: Motion::G00, families: family::table(), in_subprogram: false }
     }
 
     /// Whether the sink of the trace asked to stop (PRJ.TRACE).
@@ -72,10 +107,11 @@ impl<'c> Machine<'c> {
     }
 
     /// Executes one block; `src` is the program around it (the contour cycles read from it).
-    /// `Ok(true)` when the block ends the program (M02, M30).
-    pub fn block(&mut self, b: &Block, src: &mut Source) -> Result<bool, Alarm> {
+    /// Returns what follows it: the next block, the program's end (M02, M30), a call (M98) or
+    /// a return (M99).
+    pub fn block(&mut self, b: &Block, src: &mut Source) -> Result<Flow, Alarm> {
         let dialect = self.st.config.dialect;
-        let (codes, end) = self.codes(b)?;
+        let (codes, m) = self.codes(b)?;
         // The block's kind: its written code, else the modal motion mode.
         let code = codes.first().copied().unwrap_or(self.modal_code());
         self.st.out.note_block(b.line, scope(code));
@@ -83,11 +119,16 @@ impl<'c> Machine<'c> {
         let writes_arc = codes.iter().any(|c| matches!(c, Code::Arc { .. }));
         self.st.side = tnrc::check(b, writes_arc, self.st.side, self.st.params().nose_radius)?;
         conflicts(b, dialect, self.thread_block(code), matches!(code, Code::Arc { .. }))?;
+        if let MCode::Sub(sub) = m {
+            // SUB.CALL, SUB.RETURN: an M98 / M99 block runs no motion and sets no state.
+            return sub::block(b, sub);
+        }
         let words = self.words(b, code);
         words_allowed(b, &words)?;
         let values = self.values(b, &words)?;
         self.absolute_or_incremental(b);
         self.tapping_state(b);
+        self.spindle_state(b, &values);
         match code {
             Code::Family(index, g) => {
                 let new_run = self.motion != Motion::Family(index, g);
@@ -105,7 +146,9 @@ impl<'c> Machine<'c> {
                 crate::arc::block(&mut self.st, &values, cw, has_axis(b), b.line)?;
             }
         }
-        Ok(end)
+        // A block whose handler has no missing-word check of its own ends step 4 here.
+        self.st.missing_words_checked()?;
+        Ok(if m == MCode::End { Flow::End } else { Flow::Next })
     }
 
     /// The modal motion mode as the code a block without one runs.
@@ -129,9 +172,9 @@ impl<'c> Machine<'c> {
     /// PRJ.SUPPORTED (PRJ), COM.UNITS (M000, M001), PRJ.DIALECT (PRJ): every G and M code of the
     /// block is supported. G00 and G01; under `nc201` G90 and G91 (NC201.ABSINC); each family's
     /// codes under its dialects (another dialect's code is refused under PRJ.DIALECT); the
-    /// no-motion codes. Returns the motion/cycle codes written, in order, and whether the block
-    /// ends the program.
-    fn codes(&self, b: &Block) -> Result<(Vec<Code>, bool), Alarm> {
+    /// no-motion codes. G163 under `nc201` is refused by its own rule. Returns the motion/cycle
+    /// codes written, in order, and the block's M code as it bears on the flow.
+    fn codes(&self, b: &Block) -> Result<(Vec<Code>, MCode), Alarm> {
         let line = b.line;
         let config = self.st.config;
         let nc201 = config.dialect == Dialect::Nc201;
@@ -161,6 +204,9 @@ impl<'c> Machine<'c> {
                         // section is `UNSUPPORTED CODE`" under `nc201`).
                         80 if nc201 => return Err(alarm(AlarmCode::UnsupportedCode, b'G', Rule::PrjDialect, line)),
                         80 => None,
+                        // G163 (M004, `004_…` lines 79–89): the seed names the tapping / die cycle
+                        // but not its table or motion; under `nc201` it is refused by rule G163.
+                        163 if nc201 => return Err(alarm(AlarmCode::UnsupportedCode, b'G', Rule::G163, line)),
                         20 | 21 => {
                             // COM.UNITS: the grid of a trace is fixed for the whole program.
                             let wanted = if g == 20 { Units::Inch } else { Units::Metric };
@@ -175,7 +221,7 @@ impl<'c> Machine<'c> {
             };
             motion.extend(code);
         }
-        let mut end = false;
+        let mut flow = MCode::Other;
         if let Some(m) = b.get(b'M') {
             if m.point {
                 return Err(alarm(AlarmCode::NotInteger, b'M', Rule::ComRanges, line));
@@ -183,10 +229,18 @@ impl<'c> Machine<'c> {
             let Some(m) = code_value(m).filter(|&m| m <= 99) else {
                 return Err(alarm(AlarmCode::UnsupportedCode, b'M', Rule::PrjSupported, line));
             };
-            // PRJ.MODAL: M02 and M30 end the program.
-            end = m == 2 || m == 30;
+            flow = match m {
+                // PRJ.MODAL: M02 and M30 end the program.
+                2 | 30 => MCode::End,
+                98 => MCode::Sub(SubCode::Call),
+                // SUB.RETURN: "M99 in the main program is `UNSUPPORTED` on M (FANUC restarts the
+                // main program endlessly: no finite trace)".
+                99 if !self.in_subprogram => return Err(alarm(AlarmCode::Unsupported, b'M', Rule::SubReturn, line)),
+                99 => MCode::Sub(SubCode::Return),
+                _ => MCode::Other,
+            };
         }
-        Ok((motion, end))
+        Ok((motion, flow))
     }
 
     /// COM.LEAD: whether the block, by its written or modal code, is a thread block.
@@ -209,10 +263,17 @@ impl<'c> Machine<'c> {
     }
 
     /// COM.UNITS, COM.RANGES, COM.LEAD (M000, M001, M002), PRJ.DIALECT (PRJ): each word's
-    /// value, in alphabetical order, read as the block's word table says.
+    /// value, in alphabetical order, read as the block's word table says; under `gsk` and
+    /// `fanuc` S as the spindle section says (G50.SMAX: an integer, the maximum's range).
     fn values(&self, b: &Block, words: &Words) -> Result<Values, Alarm> {
         let mut v = Values::default();
         for letter in b.letters() {
+            if let (b'S', Some(n)) = (letter, b.get(b'S')) {
+                if self.st.config.dialect != Dialect::Nc201 {
+                    v.set(b'S', spindle::s_value(n, spindle::writes_g50(b), b.line)?);
+                }
+                continue;
+            }
             if ALWAYS.contains(&letter) {
                 continue;
             }
@@ -242,8 +303,9 @@ impl<'c> Machine<'c> {
     /// G84.FORMAT, G80 (`Rule::G80`), G50.SMAX (M003): what rigid tapping reads from the blocks before it —
     /// G98 / G99 written set the feed mode ("the project keeps which one is in force (G99 at
     /// the start) only for G84's lead"); G80 "ends an M29 not followed by G84"; M29 "arms rigid
-    /// tapping" (an M29 written with G80 arms: the G80 ends only an earlier one); "S is the last
-    /// S word". Contour blocks never come here (CNT.MODAL: they change no machine state).
+    /// tapping" (an M29 written with G80 arms: the G80 ends only an earlier one). The speed is
+    /// the spindle state's ([`Machine::spindle_state`]). Contour blocks never come here
+    /// (CNT.MODAL: they change no machine state).
     fn tapping_state(&mut self, b: &Block) {
         let t = &mut self.st.tapping;
         for g in b.g_codes() {
@@ -257,18 +319,31 @@ impl<'c> Machine<'c> {
         if b.get(b'M').and_then(code_value) == Some(29) {
             t.rigid = true;
         }
-        if let Some(s) = b.get(b'S') {
-            t.speed = Some(s.clone());
+    }
+
+    /// G96.SMAX, G96.SPEED, G50.SMAX (M003), under `gsk` and `fanuc`: whether the block writes
+    /// G96 with no maximum from an earlier block (deferred to the end of check step 4), then the
+    /// block's G96 / G97 and S. Contour blocks never come here (CNT.MODAL).
+    fn spindle_state(&mut self, b: &Block, v: &Values) {
+        if self.st.config.dialect == Dialect::Nc201 {
+            return;
         }
+        self.st.deferred = self.st.spindle.smax_missing(b);
+        self.st.spindle.take(b, v.get(b'S'));
     }
 
     /// G00 / G01 (PRJ.MODAL, PRJ): one move to the end point, both axes together; G01 at the modal
-    /// feed (COM.LEAD: `MISSING WORD F` when a G01 block moves with no feed set).
+    /// feed (COM.LEAD: `MISSING WORD F` when a G01 block moves with no feed set). Then G96.SMAX
+    /// (the end of step 4) and, for a G00 block with axis words, G96.RAPID.
     fn linear(&mut self, b: &Block, feed: bool, v: &Values) -> Result<(), Alarm> {
         self.st.take_lead(v);
         let moving = has_axis(b);
         if feed && moving && self.st.feed.is_none() {
             return Err(alarm(AlarmCode::MissingWord, b'F', Rule::ComLead, b.line));
+        }
+        self.st.missing_words_checked()?;
+        if !feed && moving {
+            self.st.spindle.rapid(self.st.config.readings.g96_rapid, b.line)?;
         }
         self.motion = if feed { Motion::G01 } else { Motion::G00 };
         if !moving {
@@ -282,17 +357,6 @@ impl<'c> Machine<'c> {
             _ => self.st.out.rapid(x, z, Rule::PrjModal, b.line),
         }
     }
-}
-
-/// PRJ.WORD (PRJ), F76.FORMAT (M003): the words the block's kind accepts, checked in
-/// alphabetical order.
-fn words_allowed(b: &Block, words: &Words) -> Result<(), Alarm> {
-    for letter in b.letters() {
-        if !ALWAYS.contains(&letter) && words.read(letter).is_none() {
-            return Err(alarm(AlarmCode::WordNotAllowed, letter, words.refusal(letter), b.line));
-        }
-    }
-    Ok(())
 }
 
 /// The kind of a family's block: its code, whether it has axis words, and whether P or Q.
@@ -326,44 +390,4 @@ pub fn code_value(n: &Number) -> Option<u64> {
         return Some(0);
     }
     n.digits.parse().ok()
-}
-
-/// PRJ.WORD (PRJ): two motion/cycle codes in one block are a `CONFLICT` on G; under `nc201`
-/// (NC201.ABSINC, M004) so are two of G90/G91, checked right after.
-fn two_motion_codes(b: &Block, dialect: Dialect, motion_codes: usize) -> Result<(), Alarm> {
-    let line = b.line;
-    if motion_codes > 1 {
-        return Err(alarm(AlarmCode::Conflict, b'G', Rule::PrjWord, line));
-    }
-    if dialect == Dialect::Nc201 {
-        let absinc = b.g_codes().filter(|g| matches!(code_value(g), Some(90 | 91))).count();
-        if absinc > 1 {
-            return Err(alarm(AlarmCode::Conflict, b'G', Rule::Nc201AbsInc, line));
-        }
-    }
-    Ok(())
-}
-
-/// COM.ABSINC, COM.LEAD (M001, M002), ARC.FORMAT (M003): X with U; Z with W; in an arc block
-/// (G02/G03, written or modal) R with I or K (`CONFLICT` on R); F with I in a thread block
-/// (G92, G76, G78, G32, G33, G34, written or modal), where I is threads per inch. Under `nc201`
-/// U, W and I are no incremental or lead addresses, so the pair conflicts do not exist there.
-fn conflicts(b: &Block, dialect: Dialect, thread: bool, arc: bool) -> Result<(), Alarm> {
-    let line = b.line;
-    if dialect == Dialect::Nc201 {
-        return Ok(());
-    }
-    if b.has(b'X') && b.has(b'U') {
-        return Err(alarm(AlarmCode::Conflict, b'U', Rule::ComAbsInc, line));
-    }
-    if b.has(b'Z') && b.has(b'W') {
-        return Err(alarm(AlarmCode::Conflict, b'W', Rule::ComAbsInc, line));
-    }
-    if arc && b.has(b'R') && (b.has(b'I') || b.has(b'K')) {
-        return Err(alarm(AlarmCode::Conflict, b'R', Rule::ArcFormat, line));
-    }
-    if thread && b.has(b'F') && b.has(b'I') {
-        return Err(alarm(AlarmCode::Conflict, b'I', Rule::ComLead, line));
-    }
-    Ok(())
 }

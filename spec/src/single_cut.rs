@@ -49,6 +49,7 @@ impl Run {
         let Some(feed) = st.feed else {
             return Err(alarm(AlarmCode::MissingWord, b'F', Rule::ComLead, b.line));
         };
+        st.missing_words_checked()?;
         let a = st.position();
         let (x, z) = st.end_point(v);
         let d = (x.or(self.end_x).unwrap_or(a.0), z.or(self.end_z).unwrap_or(a.1));

@@ -123,8 +123,12 @@ fn contour_block_checks() {
     for (contour, expect) in cases {
         assert_eq!(alarm_of(&g71(contour)), *expect, "{contour:?}");
     }
-    // The same checks for G70's contour, which stands before it.
-    assert_eq!(alarm_of("N10 G0 X20 F1\nN20 Z-5 M98\nG70 P10 Q20"), (WordNotAllowed, Some('M'), Rule::CntNosub, 2));
+    // The same checks for G70's contour, which stands before it. Its blocks run first as
+    // ordinary blocks (CNT.FLOW), so its M98 is a legal call there (SUB.CALL: N, M, P only);
+    // as a contour block it is still CNT.NOSUB (SUB.* "Contours").
+    let g70 = "N10 G0 X20 F1\nN20 M98 P1000\nN30 Z-5\nG70 P10 Q30\nM30\nO1000\nM99\n";
+    assert_eq!(alarm_of(g70), (WordNotAllowed, Some('M'), Rule::CntNosub, 2));
+    assert_eq!(alarm_of("N10 G0 X20 F1\nN20 Z-5 M98\nG70 P10 Q20"), (WordNotAllowed, Some('Z'), Rule::SubCall, 2));
     // No feed is needed in a contour, and arcs need none either.
     assert_eq!(expand(g71(&["G01 X20", "Z-5", "G02 X30 Z-10 R5", "G01 X50"]).as_bytes(), &Config::default()).alarm, None);
     // A T word while compensation is in force, as in any block (TNRC.SWITCH).

@@ -50,10 +50,11 @@ fn g50_words() {
     assert_eq!(run("G50 X999999.999 Z-999999.999 S3000 T1 M3 N1 O1").alarm, None);
 }
 
-/// G50.SMAX: G96, G97, G98, G99 are no-motion codes; the feed is kept as written.
+/// G50.SMAX: G96, G97, G98, G99 are no-motion codes; the feed is kept as written. (G96.SMAX:
+/// the maximum, G50 S, comes first.)
 #[test]
 fn spindle_and_feed_modes_change_no_geometry() {
-    let t = run("G96 S200\nG98 G1 X1 F100\nG99 G97 S500\nG1 Z-1\n");
+    let t = run("G50 S2000\nG96 S200\nG98 G1 X1 F100\nG99 G97 S500\nG1 Z-1\n");
     assert_eq!(moves(&t), vec![(MoveKind::Feed, 1_000, 0), (MoveKind::Feed, 1_000, -1_000)]);
     assert!(t.moves().all(|m| m.feed == 1_000_000));
 }

@@ -66,6 +66,7 @@ impl Family for ThreadMoves {
             },
             _ => 0,
         };
+        st.missing_words_checked()?;
         let from = st.position();
         let (x, z) = st.end_point(v);
         let angle = v.get(b'P').unwrap_or(0) as u32;

@@ -143,6 +143,7 @@ impl Multipass {
         let Some(dd) = v.get(b'Q') else {
             return Err(alarm(AlarmCode::MissingWord, b'Q', Rule::G76Required, line));
         };
+        st.missing_words_checked()?;
         let (j, k_pull) = match cycle {
             Cycle::G76 => (v.get(b'J'), v.get(b'K')),
             Cycle::G78 => self.pull78.take(v.get(b'J'), v.get(b'K')),

@@ -150,6 +150,7 @@ pub fn second_block(ax: Axes, first: First, st: &mut State, b: &BlockIn, src: &m
     let Some(nf) = v.get(b'Q') else {
         return Err(alarm(AlarmCode::MissingWord, b'Q', Rule::CntPq, line));
     };
+    st.missing_words_checked()?;
     let params = st.params();
     let a = st.position();
     let blocks = contour::ahead(src, ns, nf, line)?; // (1)
