@@ -3,12 +3,13 @@
 //! the check order) and the per-pass move state machine (G162.PATH), all in integers.
 //!
 //! Lengths are grid increments, X a diameter count, depths, P, Q and V radius counts; leads and
-//! feeds (F, H, I) lead counts; angles (B, J) 0.001°, A half degrees (docs/INTERPRETATION.md,
-//! "G162 (M004)").
+//! feeds (F, H, I) lead counts; angles (B, J) 0.001°, A tenths of a degree
+//! (docs/INTERPRETATION.md, "G162 (M004)").
 
 use crate::fixed::{isqrt, mul_wide, sat, Tan};
 use crate::emit::emit;
 use crate::config::Params;
+use cycle_vocab::readings::G162Lead;
 use cycle_vocab::{Alarm, AlarmCode, Config, Event, Move, Pass, PassKind, Rule, Units};
 
 /// The depth split of a multi-pass G162: P = thread depth, Q = allowance per pass (radius).
@@ -171,7 +172,7 @@ pub struct Words {
     pub v: i64,
     /// W (the taper) as a diameter count; 0 when omitted.
     pub taper: i64,
-    /// A in half degrees, signed; 0 when omitted.
+    /// A in tenths of a degree, signed (|A| ≤ 890); 0 when omitted.
     pub a: i64,
     /// The lead of segment ②, lead counts (F, or the modal feed).
     pub lead: i64,
@@ -229,7 +230,9 @@ pub struct Cycle {
     change: i64,
     change_angle: u32,
     floor: i64,
-    /// tan of |A| (A in half degrees; looked up once) and σ = s·sign(A).
+    /// G162.I under g162.lead = steps (the letter): the lead changes in steps (`lead_steps`).
+    stepped: bool,
+    /// tan of |A| (A in tenths of a degree; looked up once) and σ = s·sign(A).
     tan: Tan,
     sigma: i64,
     /// The split, or `None` for a single pass.
@@ -270,17 +273,12 @@ impl Cycle {
         match step {
             // ① feed H from S (or the previous pass's return point) to Bn.
             0 => Some(feed(bx, i128::from(self.start.1) + t, Rule::G162Path)),
-            // ② the thread to En.
-            1 => Some(Move::variable_thread(
-                sat(ex),
-                sat(i128::from(self.ze1) + t),
-                self.lead,
-                self.angle,
-                self.change,
-                self.change_angle,
-                self.floor,
-                Rule::G162F,
-            )),
+            // ② the thread to En; stepped under g162.lead = steps (a constant lead stays plain).
+            1 => {
+                let (x, z) = (sat(ex), sat(i128::from(self.ze1) + t));
+                let m = Move::variable_thread(x, z, self.lead, self.angle, self.change, self.change_angle, self.floor, Rule::G162F);
+                Some(if self.stepped { m.stepped() } else { m })
+            }
             // ③ the 45° run-out leg: V outward on X (radius), V toward dz on Z.
             2 => Some(feed(ex + 2 * s * i128::from(self.v), lz, Rule::G162V)),
             // ④ retract X to S.x, opposite to the approach.
@@ -327,8 +325,11 @@ pub fn cycle(config: &Config, params: &Params, w: &Words, start: (i64, i64), lin
     let alarm = |code: AlarmCode, word: u8, rule: Rule| Alarm::new(code, Some(word), rule, line);
     let (sx, sz) = (i128::from(start.0), i128::from(start.1));
     // NC201.ABSINC: G91 values are distances from S.
-    let (x0, ze) =
+    let (xw, ze) =
         if w.incremental { (sx + i128::from(w.x), sz + i128::from(w.z)) } else { (i128::from(w.x), i128::from(w.z)) };
+    // G162.X: multi-pass, X is the depth-0 line at the thread's start; a single pass ends ② at
+    // X, so its depth-0 line (the start of ②) is X − Wd.
+    let x0 = if w.split.is_some() { xw } else { xw - i128::from(w.taper) };
     // 1. No thread length.
     if ze == sz {
         return Err(alarm(AlarmCode::Geometry, b'Z', Rule::G162Format));
@@ -359,8 +360,9 @@ pub fn cycle(config: &Config, params: &Params, w: &Words, start: (i64, i64), lin
     };
     let dz = sign(ze - sz);
     let ze1 = ze - i128::from(dz) * i128::from(w.v);
-    // 6. A growing pitch must stay within the F range: J·F² + 360 000·I·s2 ≤ J·Fmax².
-    if w.i > 0 && !growing_lead_fits(config, w, ze1 - sz) {
+    // 6. A growing pitch must stay within the F range (G162.I, by the reading g162.lead).
+    let stepped = config.readings.g162_lead == G162Lead::Steps;
+    if w.i > 0 && !growing_lead_fits(config, w, ze1 - sz, stepped) {
         return Err(alarm(AlarmCode::Geometry, b'I', Rule::G162I));
     }
     let (change, change_angle, floor) = variable_lead(w);
@@ -379,8 +381,9 @@ pub fn cycle(config: &Config, params: &Params, w: &Words, start: (i64, i64), lin
         change,
         change_angle,
         floor,
+        stepped,
         // |A| beyond 89° (never a legal word): 0, as `mul_tan`.
-        tan: u32::try_from(w.a.unsigned_abs()).ok().and_then(Tan::half_degrees).unwrap_or(Tan::ZERO),
+        tan: u32::try_from(w.a.unsigned_abs()).ok().and_then(Tan::tenths).unwrap_or(Tan::ZERO),
         sigma: s * w.a.signum(),
         split: w.split,
         pass,
@@ -393,11 +396,22 @@ pub fn cycle(config: &Config, params: &Params, w: &Words, start: (i64, i64), lin
 
 /// G162.I: the lead at the end of segment ② stays ≤ the F maximum. `dz2` is the Z travel of ②.
 /// s2 = twice the long-axis travel in lead counts (COM.LONGAXIS: Z long when 2|ΔZ| > |Wd|).
-fn growing_lead_fits(config: &Config, w: &Words, dz2: i128) -> bool {
+/// Continuous: J·F² + 360 000·I·s2 ≤ J·Fmax². Stepped (the letter): the first step above Fmax,
+/// k* = ⌊(Fmax − F)/I⌋ + 1, is not reached during ②: (2·k*·F + I·k*·(k* − 1))·J ≥ 360 000·s2.
+fn growing_lead_fits(config: &Config, w: &Words, dz2: i128, stepped: bool) -> bool {
     let c = i128::from(config.grid.lead_counts_per_increment());
     let (z2, xd) = (2 * dz2.abs(), i128::from(w.taper).abs());
     let s2 = if z2 > xd { z2 * c } else { xd * c };
     let (f, fmax, j) = (i128::from(w.lead), i128::from(max_lead(config.grid.units)), i128::from(w.j));
+    if stepped {
+        // 1 ≤ I, F ≤ Fmax < 2^27: k* ≤ 2^27 and I·k* ≤ Fmax − F + I < 2^28, so I·k*·(k* − 1)
+        // and 2·k*·F are below 2^55; with J < 2^30 the left side stays below 2^86. s2 < 2^66
+        // for coordinates within i64: 360 000·s2 < 2^85. Exact in i128 (saturating never acts).
+        let i = i128::from(w.i).max(1);
+        let k = (fmax - f).max(0) / i + 1;
+        let lhs = (2 * k * f).saturating_add(i.saturating_mul(k).saturating_mul(k - 1)).saturating_mul(j);
+        return lhs >= 360_000i128.saturating_mul(s2);
+    }
     // j ≤ 10^9, f ≤ 10^8: j·f² ≤ 10^25; I ≤ 10^8 and s2 ≤ 2^66: the product stays below 2^127
     // for any coordinates within i64 (saturating beyond, which only makes the check stricter).
     let lhs = j.saturating_mul(f * f).saturating_add(360_000i128.saturating_mul(i128::from(w.i)).saturating_mul(s2));

@@ -4,6 +4,7 @@
 extern crate std;
 
 use crate::tests::{expand, gcode, grid_of_round, moves, passes, xorshift};
+use cycle_vocab::readings::G162Lead;
 use cycle_vocab::text::Trace;
 use cycle_vocab::{
     Alarm, AlarmCode, Config, Dialect, Event, Grid, Increment, Move, MoveKind, Params, Pass, PassKind, Rule, Units,
@@ -14,6 +15,13 @@ use std::vec::Vec;
 
 fn nc201() -> Config {
     Config { dialect: Dialect::Nc201, ..Config::default() }
+}
+
+/// nc201 under the reading g162.lead = continuous (the reading before the letter's).
+pub(crate) fn continuous() -> Config {
+    let mut c = nc201();
+    c.readings.g162_lead = G162Lead::Continuous;
+    c
 }
 
 fn with_params(params: Params) -> Config {
@@ -181,28 +189,32 @@ fn run_out_leg_and_retract() {
     assert_eq!(alarm_of("G0 X30 Z5\nG162 X24 Z-20 V25 H500 F1\n", nc201()), geo(b'V', Rule::G162V));
     assert_eq!(alarm_of("G0 X100 Z5\nG162 X24 Z-20 V24.999 H500 F1\n", nc201()), None);
     assert_eq!(alarm_of("G0 X30 Z5\nG162 X30 Z-20 H500 F1\n", nc201()), geo(b'X', Rule::G162Retract));
-    // Leg end 24 + 6 + 2·1 = 32 beyond S.x = 30; 24 + 4 + 2 = 30 is S.x itself (allowed).
-    assert_eq!(alarm_of("G0 X30 Z5\nG162 X24 Z-20 W6 V1 H500 F1\n", nc201()), geo(b'X', Rule::G162Retract));
-    assert_eq!(alarm_of("G0 X30 Z5\nG162 X24 Z-20 W4 V1 H500 F1\n", nc201()), None);
+    // Multi-pass leg end 24 + 6 + 2·1 = 32 beyond S.x = 30; 24 + 4 + 2 = 30 is S.x itself
+    // (allowed). A single pass ends ② at X (G162.X): its leg ends at 29 + 2 = 31, or at 30.
+    assert_eq!(alarm_of("G0 X30 Z5\nG162 X24 Z-20 W6 V1 H500 P1 Q1 F1\n", nc201()), geo(b'X', Rule::G162Retract));
+    assert_eq!(alarm_of("G0 X30 Z5\nG162 X24 Z-20 W4 V1 H500 P1 Q1 F1\n", nc201()), None);
+    assert_eq!(alarm_of("G0 X30 Z5\nG162 X29 Z-20 W6 V1 H500 F1\n", nc201()), geo(b'X', Rule::G162Retract));
+    assert_eq!(alarm_of("G0 X30 Z5\nG162 X28 Z-20 W6 V1 H500 F1\n", nc201()), None);
 }
 
-/// G162.I, G162.J, G162.B: a shrinking pitch carries its floor |I|; F ≤ |I| is constant; a
-/// growing pitch past the F maximum is GEOMETRY on I; B is the start angle, B360 the zero mark.
+/// G162.I, G162.J, G162.B under g162.lead = continuous: a shrinking pitch carries its floor
+/// |I|; F ≤ |I| is constant; a growing pitch past the F maximum is GEOMETRY on I; B is the start
+/// angle, B360 the zero mark. (The letter, `steps`: `readings_g162_tests`.)
 #[test]
 fn variable_pitch_and_start_angle() {
-    let th = threads(&expand("G0 X50 Z5\nG162 X44 Z-30 H600 F3 I-0.5 J180 B90\n", nc201()));
+    let th = threads(&expand("G0 X50 Z5\nG162 X44 Z-30 H600 F3 I-0.5 J180 B90\n", continuous()));
     assert_eq!(th, [Move::variable_thread(44_000, -30_000, 30_000, 90_000, -5_000, 180_000, 5_000, Rule::G162F)]);
-    let th = threads(&expand("G0 X50 Z5\nG162 X44 Z-30 H600 F0.5 I-0.5 B360\n", nc201()));
+    let th = threads(&expand("G0 X50 Z5\nG162 X44 Z-30 H600 F0.5 I-0.5 B360\n", continuous()));
     assert_eq!(th, [Move::thread(44_000, -30_000, 5_000, 0, Rule::G162F)]);
-    let th = threads(&expand("G0 X50 Z5\nG162 X44 Z-30 H600 F2 I0.01\n", nc201()));
+    let th = threads(&expand("G0 X50 Z5\nG162 X44 Z-30 H600 F2 I0.01\n", continuous()));
     assert_eq!(th, [Move::variable_thread(44_000, -30_000, 20_000, 0, 100, 360_000, 0, Rule::G162F)]);
     // J without I: constant.
-    let th = threads(&expand("G0 X50 Z5\nG162 X44 Z-30 H600 F2 J90\n", nc201()));
+    let th = threads(&expand("G0 X50 Z5\nG162 X44 Z-30 H600 F2 J90\n", continuous()));
     assert_eq!(th[0].lead_change, 0);
     // Growing bound: J·F² + 360 000·I·s2 ≤ J·Fmax², s2 = 2·|ΔZ|·10 = 700 000 (ΔZ = 35 mm):
     // F = 9999 mm is already the maximum, so any growth is refused; F1 I1 grows by 1 mm/rev
     // over 35 mm to √(1 + 2·35) ≈ 8.4 mm: fine.
-    let c = nc201();
+    let c = continuous();
     assert_eq!(
         alarm_of("G0 X50 Z5\nG162 X44 Z-30 H600 F9999 I0.0001\n", c),
         al(AlarmCode::Geometry, b'I', Rule::G162I, 2)
@@ -259,8 +271,10 @@ fn g162_check_order() {
         ("G92 X1 Z1 F1", al(AlarmCode::UnsupportedCode, b'G', Rule::PrjDialect, 1)),
         ("G34 X1 Z1 F1 K1", al(AlarmCode::UnsupportedCode, b'G', Rule::PrjDialect, 1)),
         ("G76 X1 Z1 P1 Q1 F1", al(AlarmCode::UnsupportedCode, b'G', Rule::PrjDialect, 1)),
-        ("G162 X1 Z-1 H1 F1 A27.3", al(AlarmCode::Precision, b'A', Rule::G162A, 1)),
-        ("G162 X1 Z-1 H1 F1 A27.25", al(AlarmCode::Precision, b'A', Rule::ComUnits, 1)),
+        // G162.A: any tenth is legal (A27.3: `readings_g162_tests`); a second decimal is
+        // PRECISION under G162.A.
+        ("G162 X1 Z-1 H1 F1 A27.35", al(AlarmCode::Precision, b'A', Rule::G162A, 1)),
+        ("G162 X1 Z-1 H1 F1 A27.25", al(AlarmCode::Precision, b'A', Rule::G162A, 1)),
         ("G162 X1 Z-1 H1 F1 A-89.5", al(AlarmCode::OutOfRange, b'A', Rule::G162A, 1)),
         ("G162 X1 Z-1 H1 F1 B360.001", al(AlarmCode::OutOfRange, b'B', Rule::G162B, 1)),
         ("G162 X1 Z-1 H1 F1 B-1", al(AlarmCode::OutOfRange, b'B', Rule::G162B, 1)),
@@ -389,7 +403,7 @@ fn random_legal_g162_cycles() {
         let sx = x0 + sign * (2 * v + taper.abs() + 2 + 2 * (r() % 5_000) as i64);
         let sz = (r() % 10_000) as i64;
         let ze = sz - 5_000 - (r() % 50_000) as i64;
-        let a = (r() % 121) as i64 - 60;
+        let a = (r() % 1_781) as i64 - 890; // tenths of a degree
         let i = (r() % 4_000) as i64 - 2_000;
         let f = 1_000 + (r() % 30_000) as i64;
         let incremental = r() % 2 == 0;
@@ -406,7 +420,7 @@ fn random_legal_g162_cycles() {
             lead(1 + (r() % 9_000_000) as i64),
             len(v),
             len(half(taper)),
-            cycle_vocab::text::fixed(a * 5, 1),
+            cycle_vocab::text::fixed(a, 1),
             pq,
             lead(f),
             lead(i),
@@ -433,9 +447,13 @@ fn random_legal_g162_cycles() {
         let th = threads(&t);
         let last = th.last().unwrap();
         let depth = *d.last().unwrap();
-        assert_eq!(last.x, x0 - 2 * sign * depth + taper, "{src}");
+        // G162.X: a single pass ends ② at X (its depth-0 line is X − Wd).
+        let end_x = if split { x0 - 2 * sign * depth + taper } else { x0 };
+        assert_eq!(last.x, end_x, "{src}");
         for m in &th {
             assert!(m.feed > 0, "{src}");
+            // g162.lead = steps (the letter): every changing lead is stepped.
+            assert_eq!(m.lead_steps, m.lead_change != 0, "{src}");
             assert!(m.lead_floor == 0 || (m.lead_change < 0 && m.lead_floor < m.feed), "{src}");
         }
         if i < 0 && f > -i {

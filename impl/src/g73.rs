@@ -1,7 +1,8 @@
 //! G73, pattern repeating (M003; docs/INTERPRETATION.md, "G73"): d passes, each the contour
 //! translated by T_n = (2·round(Δi·(d − n)/d) + Δu, round(Δk·(d − n)/d) + Δw) (G73.DEPTH,
-//! G73.PATH), then one rapid back to A. The contour is the expander's buffer (CNT.MAX), read once
-//! and walked d times by index; the cycle keeps only its pass, element and offset — O(1) state.
+//! G73.PATH), then one rapid back to A; under the letter of g73.c one rapid A → C first. The
+//! contour is the expander's buffer (CNT.MAX), read once and walked d times by index; the cycle
+//! keeps only its pass, element and offset — O(1) state.
 //!
 //! Bounds: Δi, Δk, Δu, Δw ≤ N < 2^30 and d ≤ 10^9, so Δi·(d − n) < 2^60 in `i128` exactly;
 //! each offset is below 2^32 and each translated coordinate stays below 2^62 (lib.rs).
@@ -12,7 +13,8 @@ use crate::fixed::{div_round_signed, sat};
 use cycle_vocab::{Alarm, AlarmCode, Event, Move, Pass, PassKind, Rule};
 
 /// The cycle's values: Δi (radius) and Δk — the total escape — the count d, the allowances Δu
-/// (diameter) and Δw, the roughing feed, and the word that gave d (R in format (a), D in (b)).
+/// (diameter) and Δw, the roughing feed, the word that gave d (R in format (a), D in (b)), and
+/// whether the tool first retreats to C (declared reading g73.c: `visit`, the letter).
 #[derive(Clone, Copy, Debug)]
 pub struct Words {
     pub di: i64,
@@ -21,10 +23,13 @@ pub struct Words {
     pub allowance: (i64, i64),
     pub feed: i64,
     pub count_word: u8,
+    pub visit_c: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Phase {
+    /// G73 point C: the rapid A → C before pass 1 (g73.c = visit).
+    ToC,
     Header,
     ToStart,
     Contour,
@@ -61,16 +66,24 @@ impl Cycle {
         if w.d > i64::from(max_passes) {
             return Err(Alarm::new(AlarmCode::TooManyPasses, Some(w.count_word), Rule::PrjMaxPass, line));
         }
-        Ok(Cycle { a, w: *w, n: 1, shift: (0, 0), elem: 0, len: contour.len(), phase: Phase::Header })
+        let phase = if w.visit_c { Phase::ToC } else { Phase::Header };
+        Ok(Cycle { a, w: *w, n: 1, shift: (0, 0), elem: 0, len: contour.len(), phase })
     }
 
     /// The next event, updating the machine position; `None` when the cycle is done. PRJ.NOOP:
     /// a move to the current position is not emitted. Bounded work: within a pass only the
     /// rapid to the start and the ns element can be moves to where the tool stands (later
-    /// elements each move), so at most two moves are skipped per call.
+    /// elements each move), so at most three moves (with the rapid to C) are skipped per call.
     pub fn next_event(&mut self, pos: &mut (i64, i64), contour: &Contour) -> Option<Event> {
         loop {
             let m = match self.phase {
+                // G73 point C = A + (2Δi + Δu, Δk + Δw) (diameter count; not emitted when C = A).
+                Phase::ToC => {
+                    self.phase = Phase::Header;
+                    let (u, w) = self.w.allowance;
+                    let cx = self.a.0.saturating_add(self.w.di.saturating_mul(2)).saturating_add(u);
+                    Move::rapid(cx, self.a.1.saturating_add(self.w.dk).saturating_add(w), Rule::G73Path)
+                }
                 Phase::Header => {
                     let (ei, ek) = escape(&self.w, self.n);
                     self.shift = (ei.saturating_mul(2).saturating_add(self.w.allowance.0), ek.saturating_add(self.w.allowance.1));

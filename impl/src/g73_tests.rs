@@ -6,11 +6,19 @@ extern crate std;
 
 use crate::contour_tests::assert_fill_agrees;
 use crate::tests::{expand, moves, passes};
+use cycle_vocab::readings::G73C;
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Move, MoveKind, Rule};
 use std::vec::Vec;
 
 fn al(code: AlarmCode, word: u8, rule: Rule, line: u32) -> Option<Alarm> {
     Some(Alarm::new(code, Some(word), rule, line))
+}
+
+/// The reading g73.c = skip (no rapid A → C): the pass offsets alone.
+fn skip() -> Config {
+    let mut c = Config::default();
+    c.readings.g73_c = G73C::Skip;
+    c
 }
 
 fn alarm_of(src: &str) -> Option<Alarm> {
@@ -34,6 +42,7 @@ const CONTOUR_3: [(MoveKind, i64, i64, i64, i64); 6] = [
 /// G73.EXAMPLE: ten passes, pass n offset by (2·round(1.8·(10 − n)) + 0.5,
 /// round(0.5·(10 − n)) + 0.5), each a rapid to A + T_n then the contour translated (arcs about
 /// translated centres, at F100); the last one on the contour plus U0.5 W0.5; then the rapid to A and G70.
+/// Under the letter (g73.c = visit) the tool first retreats to C = X86.5 Z15.5 (the register).
 #[test]
 fn example_3() {
     let t = expand(EXAMPLE_3, Config::default());
@@ -41,7 +50,7 @@ fn example_3() {
     let p = passes(&t);
     assert_eq!(p.len(), 11);
     let m = moves(&t);
-    let mut want = std::vec![Move::rapid(50_000, 10_000, Rule::PrjModal)];
+    let mut want = std::vec![Move::rapid(50_000, 10_000, Rule::PrjModal), Move::rapid(86_500, 15_500, Rule::G73Path)];
     for n in 1..=10i64 {
         let (ei, ek) = (1_800 * (10 - n), 500 * (10 - n));
         assert_eq!((p[n as usize - 1].index, p[n as usize - 1].diameter_depth), (n as u32, 2 * ei));
@@ -69,7 +78,7 @@ fn example_3() {
 fn one_pass() {
     let src = "G00 X40 Z5\nG73 U6 W2 R1\nG73 P10 Q40 U0.4 W0.1 F0.2\nN10 G00 X10 Z1\nN20 G01 Z-10\n\
                N30 G02 X20 Z-15 R5\nN40 G01 X30 Z-25\nG00 X60 Z50\n";
-    let t = expand(src, Config::default());
+    let t = expand(src, skip());
     assert_eq!(t.alarm, None);
     assert_eq!(passes(&t).iter().map(|p| (p.index, p.diameter_depth)).collect::<Vec<_>>(), [(1, 0)]);
     let m = moves(&t);
@@ -89,11 +98,11 @@ fn both_formats_and_kept_values() {
         contour(20),
         contour(30)
     );
-    let t = expand(&src, Config::default());
+    let t = expand(&src, skip());
     assert_eq!(t.alarm, None);
     let d: Vec<(u32, i64)> = passes(&t).iter().map(|p| (p.index, p.diameter_depth)).collect();
     assert_eq!(d, [(1, 12_000), (2, 8_000), (3, 4_000), (4, 0), (1, 6_000), (2, 3_000), (3, 0), (1, 12_000), (2, 8_000), (3, 4_000), (4, 0)]);
-    let mut c = Config::default();
+    let mut c = skip();
     (c.params.p5135_escape_x, c.params.p5136_escape_z, c.params.p5137_count) = (Some(-3_000), Some(1_000), Some(3));
     let t = expand("G00 X50 Z5\nG73\nG73 P1 Q2 F1\nN1 G1 X10\nN2 Z-10\n", c);
     assert_eq!(t.alarm, None);
@@ -105,7 +114,7 @@ fn both_formats_and_kept_values() {
 /// 0.5 → 1), the offsets never grow.
 #[test]
 fn offsets_round_half_away_from_zero() {
-    let t = expand("G0 X10 Z0\nG73 U-0.003 W0.001 R2\nG73 P1 Q2 F1\nN1 G1 X5\nN2 Z-5\n", Config::default());
+    let t = expand("G0 X10 Z0\nG73 U-0.003 W0.001 R2\nG73 P1 Q2 F1\nN1 G1 X5\nN2 Z-5\n", skip());
     assert_eq!(t.alarm, None);
     let m = moves(&t);
     assert_eq!(m[1], Move::rapid(10_000 - 4, 1, Rule::G73Path));

@@ -26,7 +26,9 @@ pub enum PeckCode {
 }
 
 /// The words of a second block, in increments: the end point E (absolute, an omitted axis = A's),
-/// Δi (P, radius), Δk (Q), Δd (R, radius for G74), and the kept return e.
+/// Δi (P, radius), Δk (Q), Δd (R, radius for G74), the kept return e, and G75's relief reading
+/// (declared reading g75.relief: `minus-z`, the letter, relieves toward −Z whatever the step;
+/// false: against the step; G74 always against the step).
 #[derive(Clone, Copy, Debug)]
 pub struct Words {
     pub end: (i64, i64),
@@ -35,6 +37,7 @@ pub struct Words {
     pub relief: i64,
     pub e: i64,
     pub feed: i64,
+    pub relief_minus_z: bool,
 }
 
 /// Where the cycle is in its path.
@@ -69,6 +72,9 @@ pub struct Cycle {
     /// The return after a peck and the relief, in the frame's counts.
     e: i64,
     relief: i64,
+    /// The relief goes toward −relief_dir on the step axis: σ (against the step), or +1 (toward
+    /// −Z) for G75 under g75.relief = minus-z.
+    relief_dir: i64,
     feed: i64,
     pecks: u64,
     columns: u64,
@@ -167,6 +173,7 @@ pub fn cycle(code: PeckCode, a: (i64, i64), w: &Words, max_passes: u32, line: u3
         step,
         e,
         relief,
+        relief_dir: if code == PeckCode::G75 && w.relief_minus_z { 1 } else { ds.signum() },
         feed: w.feed,
         pecks,
         columns,
@@ -221,7 +228,7 @@ impl Cycle {
                     if self.col == 0 || self.relief == 0 {
                         continue;
                     }
-                    let s = s.saturating_sub(self.sigma.saturating_mul(self.relief));
+                    let s = s.saturating_sub(self.relief_dir.saturating_mul(self.relief));
                     (self.peck_end(self.pecks), s, true, relief_rule)
                 }
                 Phase::Back => {

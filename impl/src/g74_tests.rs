@@ -87,10 +87,13 @@ fn g74_columns_and_relief() {
     assert_eq!(m.iter().filter(|m| m.rule == Rule::G74Peck).count(), 15);
 }
 
-/// G75.RELIEF: +Z against a −Z step; G75 returns 2e on the diameter.
+/// G75.RELIEF under g75.relief = against-step: +Z against a −Z step; G75 returns 2e on the
+/// diameter. (The letter, −Z: `readings_tests`.)
 #[test]
 fn g75_relief_against_the_step() {
-    let t = expand("G00 X52 Z-10\nG75 R0.5\nG75 X40 Z-20 P2 Q3 R0.3 F0.05\n", Config::default());
+    let mut c = Config::default();
+    c.readings.g75_relief = cycle_vocab::readings::G75Relief::AgainstStep;
+    let t = expand("G00 X52 Z-10\nG75 R0.5\nG75 X40 Z-20 P2 Q3 R0.3 F0.05\n", c);
     assert_eq!(t.alarm, None);
     let m = moves(&t);
     assert_eq!(m[1..3], [Move::feed(48_000, -10_000, 500, Rule::G75Peck), Move::rapid(49_000, -10_000, Rule::G75Peck)]);

@@ -34,7 +34,8 @@ impl CutCode {
 pub struct CutState {
     /// The end point D of the run (X diameter, Z), absolute.
     pub end: (i64, i64),
-    /// I (G90, radius) or K (G94), increments.
+    /// G90: I (radius); G94: k = C.z − D.z, the K word as the declared reading g94.k reads it
+    /// (−K under the letter `end-minus-start`, K under `start-minus-end`). Increments.
     pub taper: i64,
     /// Cycles cut in this run.
     pub index: u32,
@@ -119,8 +120,8 @@ pub fn cycle(code: CutCode, st: &CutState, a: (i64, i64), feed: i64, line: u32) 
             if !taper_fits(t, w) {
                 return Err(geometry(b'K', rule_taper));
             }
-            // C.z = D.z + K: ① rapid Z to C.z; ③ feed Z back to A.z at D.x. The Z depth is
-            // printed as a radius: diameter_depth = 2·|A.z − C.z|.
+            // C.z = D.z + k (k = C.z − D.z, G94.TAPER): ① rapid Z to C.z; ③ feed Z back to A.z
+            // at D.x. The Z depth is printed as a radius: diameter_depth = 2·|A.z − C.z|.
             let cz = add(d.1, t);
             ((a.0, cz), (d.0, a.1), sub(a.1, cz).saturating_abs().saturating_mul(2))
         }

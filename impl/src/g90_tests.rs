@@ -88,10 +88,18 @@ fn g94_seed_face_steps() {
     assert!(gcode(src, Config::default()).contains("(PASS 1 ROUGH DEPTH 5.500)\n"));
 }
 
-/// G94.TAPER: C.z = D.z + K; ① tagged G94.TAPER; depth |A.z − C.z|.
+/// G94.TAPER (declared reading g94.k): the letter `end-minus-start` C.z = D.z − K (`G94 X20
+/// Z-5 K-2` starts at Z−3), `start-minus-end` C.z = D.z + K (Z−7); ① tagged G94.TAPER; depth
+/// |A.z − C.z|.
 #[test]
 fn g94_taper() {
     let t = expand("G0 X50 Z2\nG94 X20 Z-5 K-2 F0.2\n", Config::default());
+    assert_eq!(t.alarm, None);
+    assert_eq!(passes(&t), [pass(1, 10_000, Rule::G94Path)]);
+    assert_eq!(moves(&t)[1], Move::rapid(50_000, -3_000, Rule::G94Taper));
+    let mut c = Config::default();
+    c.readings.g94_k = cycle_vocab::readings::G94K::StartMinusEnd;
+    let t = expand("G0 X50 Z2\nG94 X20 Z-5 K-2 F0.2\n", c);
     assert_eq!(t.alarm, None);
     assert_eq!(passes(&t), [pass(1, 18_000, Rule::G94Path)]);
     assert_eq!(
@@ -121,11 +129,12 @@ fn cycle_checks() {
     assert_eq!(a("G90 Z-40 I-5 F0.3"), None); // U = 0: no bound
     assert_eq!(a("G94 Z-5 F0.3"), al(AlarmCode::Geometry, b'X', Rule::G94Format, 2));
     assert_eq!(a("G94 Z-5 K9 F0.3"), al(AlarmCode::Geometry, b'X', Rule::G94Format, 2));
-    // W = −7: K > 0 needs |K| ≤ 7.
-    assert_eq!(a("G94 X40 Z-5 K7.001 F0.3"), al(AlarmCode::Geometry, b'K', Rule::G94Taper, 2));
-    assert_eq!(a("G94 X40 Z-5 K7 F0.3"), None);
-    assert_eq!(a("G94 X40 Z9 K-7 F0.3"), None);
-    assert_eq!(a("G94 X40 Z9 K-7.001 F0.3"), al(AlarmCode::Geometry, b'K', Rule::G94Taper, 2));
+    // W = −7: k = C.z − D.z = −K (the letter) > 0 needs |K| ≤ 7.
+    assert_eq!(a("G94 X40 Z-5 K-7.001 F0.3"), al(AlarmCode::Geometry, b'K', Rule::G94Taper, 2));
+    assert_eq!(a("G94 X40 Z-5 K-7 F0.3"), None);
+    assert_eq!(a("G94 X40 Z-5 K70 F0.3"), None); // k and W of one sign: no bound
+    assert_eq!(a("G94 X40 Z9 K7 F0.3"), None);
+    assert_eq!(a("G94 X40 Z9 K7.001 F0.3"), al(AlarmCode::Geometry, b'K', Rule::G94Taper, 2));
     assert_eq!(a("G94 X40 K-70 F0.3"), None); // Z omitted: W = 0, no bound (a face cut at A.z)
     // PRJ.NOOP: ① and ③ are moves to the current position.
     let t = expand("G0 X50 Z2\nG90 Z-40 F0.3\n", Config::default());
@@ -247,7 +256,7 @@ fn grids() {
     assert_eq!(moves(&t)[2], Move::feed(15_000, -10_000, 1_000, Rule::G90Path));
     assert_eq!(expand("G90 X1.5 Z-1. I0.00001 F0.01", inch).alarm, al(AlarmCode::Precision, b'I', Rule::ComUnits, 1));
     let isc = Config { grid: Grid { units: Units::Metric, increment: Increment::Isc }, ..Config::default() };
-    let t = expand("G0 X50 Z2\nG94 X40.0001 Z-3.5 K-0.0001 F0.3\n", isc);
+    let t = expand("G0 X50 Z2\nG94 X40.0001 Z-3.5 K0.0001 F0.3\n", isc);
     assert_eq!(t.alarm, None);
     assert_eq!(passes(&t), [pass(1, 2 * 55_001, Rule::G94Path)]);
     assert_eq!(moves(&t)[1], Move::rapid(500_000, -35_001, Rule::G94Taper));
@@ -266,7 +275,7 @@ fn extreme_words() {
     assert_eq!(passes(&t)[0].diameter_depth, 999_999_999 + 999_999_999 + 1_999_999_998);
     assert_eq!(moves(&t)[0], Move::rapid(-2_999_999_997, 999_999_999, Rule::G90Taper));
     assert_eq!(moves(&t).last(), Some(&Move::rapid(999_999_999, 999_999_999, Rule::G90Path)));
-    let t = expand("G94 X-999999.999 Z-999999.999 K-999999.999 F9999\n", c);
+    let t = expand("G94 X-999999.999 Z-999999.999 K999999.999 F9999\n", c);
     assert_eq!(t.alarm, None);
     assert_eq!(passes(&t)[0].diameter_depth, 2 * 2_999_999_997);
 }

@@ -59,12 +59,12 @@ struct PullInputs {
 }
 
 impl PullMemo {
-    /// G92.JK.1–7 amounts (No.19 of the lead where J or K is omitted) and the G92.PULLOUT
-    /// offsets for these inputs: the kept ones when the inputs are the last cycle's.
+    /// G92.JK.1–7 amounts (No.19 of the lead where J or K is omitted, No.5131 for JK.1's J)
+    /// and the G92.PULLOUT offsets for these inputs: the kept ones when the inputs are the last cycle's.
     fn get(&mut self, config: &Config, params: &Params, inputs: PullInputs) -> (Option<Amounts>, Option<Offsets>) {
         if self.made_from != Some(inputs) {
             let c = tenths_of_lead(params.no19_pullout, inputs.lead, config.grid);
-            let amounts = g92_amounts(inputs.j, inputs.k, c);
+            let amounts = g92_amounts(inputs.j, inputs.k, c, params.p5131_chamfer_angle);
             let offsets = amounts.map(|am| offsets(am, inputs.w, inputs.r, inputs.s));
             *self = PullMemo { made_from: Some(inputs), amounts, offsets };
         }
@@ -74,7 +74,8 @@ impl PullMemo {
 
 /// One G92 cycle from `a` with the run's values: checks in the register's order — W = 0
 /// (G92.FORMAT), taper (G92.TAPER), side (COM.SIDE), No.107 (G92.JK.8), K against the long-axis
-/// travel (G92.PULLOUT), pass bound (PRJ.MAXPASS) — then the cycle (G92.PATH).
+/// travel (G92.PULLOUT), pass bound (PRJ.MAXPASS), step ③ opposite to ① (G92.PATH) — then the
+/// cycle (G92.PATH).
 pub fn cycle(
     config: &Config,
     params: &Params,
@@ -118,6 +119,15 @@ pub fn cycle(
     // PRJ.MAXPASS: one pass × L starts.
     if st.starts > params.max_passes {
         return Err(alarm(AlarmCode::TooManyPasses, Some(b'L'), Rule::PrjMaxPass));
+    }
+    // G92.PATH — step ③ opposite to ① (DEPARTS, `002_…` line 55), the last check: ③ starts at
+    // X₃ (the pull-out's end, else D.x); X₃ beyond A.x (s·(A.x − X₃) < 0) is refused, on J
+    // when the pull-out's short-axis move carries X there, else on X.
+    let beyond = |x: i128| i128::from(s) * (i128::from(a.0) - x) < 0;
+    let x3 = i128::from(d.0) + pull.map_or(0, |o| i128::from(o.end.0));
+    if beyond(x3) {
+        let word = if beyond(i128::from(d.0)) { b'X' } else { b'J' };
+        return Err(alarm(AlarmCode::Geometry, Some(word), Rule::G92Path));
     }
     let cx = sat(cx);
     let path = Path {

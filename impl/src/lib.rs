@@ -351,3 +351,12 @@ mod operator_tests;
 
 #[cfg(test)]
 mod operator_cycle_tests;
+
+#[cfg(test)]
+mod thread_points_tests;
+
+#[cfg(test)]
+mod readings_tests;
+
+#[cfg(test)]
+mod readings_g162_tests;

@@ -112,6 +112,9 @@ pub struct Machine {
     g92_pull: PullMemo,
     g76: FirstBlock,
     g78: FirstBlock,
+    /// G78 J and K are modal (`000_…` lines 59, 61): the J and the K last written in a G78
+    /// second block, each kept on its own for the whole program (G76's are not kept).
+    g78_jk: (Option<i64>, Option<i64>),
     /// NC201.ABSINC: G91 in force (`nc201` only).
     incremental: bool,
     /// TNRC.CODES: the nose-radius compensation in force.
@@ -201,8 +204,8 @@ fn allowed(kind: Kind, dialect: Dialect) -> u32 {
     }
 }
 
-/// FANUC tool angles (F76.FORMAT).
-pub const FANUC_ANGLES: [u32; 6] = [80, 60, 55, 30, 29, 0];
+/// FANUC tool angles (F76.FORMAT, PRJ.DIALECT: `003_…` line 5 lists 40 too).
+pub const FANUC_ANGLES: [u32; 7] = [80, 60, 55, 40, 30, 29, 0];
 
 impl Machine {
     pub fn new(config: Config) -> Machine {
@@ -218,6 +221,7 @@ impl Machine {
             g92_pull: PullMemo::default(),
             g76: FirstBlock::defaults(&params, Code::G76),
             g78: FirstBlock::defaults(&params, Code::G78),
+            g78_jk: (None, None),
             incremental: false,
             comp: Comp::Off,
             g71: FirstValues { depth: params.p5132_rough_depth, retract: params.p5133_rough_retract },

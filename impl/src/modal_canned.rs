@@ -15,6 +15,7 @@ use crate::run::Run;
 use crate::words::{integer_in, At};
 use crate::Program;
 use cycle_vocab::{Alarm, AlarmCode, Rule};
+use cycle_vocab::readings::{G73C, G75Relief};
 
 /// G73.FORMAT: the values a G73 first block keeps — Δi (radius) and Δk, increments, and d.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -66,6 +67,7 @@ impl Machine {
             relief: v.r.unwrap_or(0),
             e,
             feed,
+            relief_minus_z: self.config.readings.g75_relief == G75Relief::MinusZ,
         };
         *run = Run::Peck(g74::cycle(code, self.pos, &words, self.params.max_passes, line)?);
         Ok(())
@@ -107,6 +109,7 @@ impl Machine {
             allowance: (v.u.unwrap_or(0), v.w.unwrap_or(0)),
             feed,
             count_word,
+            visit_c: self.config.readings.g73_c == G73C::Visit,
         };
         *run = Run::Pattern(g73::Cycle::new(self.pos, &words, prog.contour, self.params.max_passes, line)?);
         Ok(())

@@ -10,6 +10,7 @@ use crate::g92;
 use crate::multipass::{self, Code, FirstBlock, Second};
 use crate::run::Run;
 use crate::thread_move::{thread_move, ThreadCode, ThreadWords};
+use cycle_vocab::readings::G94K;
 use cycle_vocab::{Alarm, AlarmCode, Move, Rule};
 
 impl Machine {
@@ -101,15 +102,17 @@ impl Machine {
         let lead = self.feed.ok_or(missing(b'F', Rule::ComLead))?;
         let k = v.p.ok_or(missing(b'P', Rule::G76Required))?;
         let dd = v.q.ok_or(missing(b'Q', Rule::G76Required))?;
-        let sec = Second {
-            d: Self::end_point(v, self.pos, self.pos),
-            i: v.r.unwrap_or(0),
-            k,
-            dd,
-            j: v.j,
-            kk: v.k,
-            lead,
+        // G78 J and K are modal, each word on its own; G76's belong to the block (OPEN).
+        let (j, kk) = match code {
+            Code::G76 => (v.j, v.k),
+            Code::G78 => {
+                let kept = &mut self.g78_jk;
+                kept.0 = v.j.or(kept.0);
+                kept.1 = v.k.or(kept.1);
+                *kept
+            }
         };
+        let sec = Second { d: Self::end_point(v, self.pos, self.pos), i: v.r.unwrap_or(0), k, dd, j, kk, lead };
         let first = match code {
             Code::G76 => &self.g76,
             Code::G78 => &self.g78,
@@ -166,7 +169,10 @@ impl Machine {
             self.feed = Some(f);
         }
         if let Some(t) = v.taper {
-            self.cut.taper = t;
+            // G94.TAPER (declared reading g94.k): the run keeps k = C.z − D.z; the letter reads
+            // K = end Z − start Z (C.z = D.z − K), `start-minus-end` K = C.z − D.z.
+            let end_minus_start = self.config.readings.g94_k == G94K::EndMinusStart;
+            self.cut.taper = if code == CutCode::G94 && end_minus_start { -t } else { t };
         }
         if !axis {
             return Ok(());

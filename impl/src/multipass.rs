@@ -6,6 +6,7 @@ use crate::fixed::{sat, Tan};
 use crate::pullout::{multi_amounts, offsets, tenths_of_lead, travel};
 use crate::schedule::{Rough, Schedule, ScheduleParams};
 use crate::config::Params;
+use cycle_vocab::readings::ThreadZRef;
 use cycle_vocab::{Alarm, AlarmCode, Config, Pass, PassKind, Rule};
 
 /// Which multi-pass code.
@@ -85,6 +86,28 @@ enum Flank {
     Left,
 }
 
+/// A flank's Z offset (before σ) as a function of the depth: base + mul·t(δ).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct FlankZ {
+    base: i64,
+    mul: i64,
+}
+
+impl FlankZ {
+    /// Infeed Z and the modes (declared reading thread.zref), with t(T) = `t_target`:
+    /// `start` (the letter) measures every mode from B.z = A.z — right t(δ), centre 0, left
+    /// −t(δ); `groove` ends every mode's last rough pass at t(T) — right t(δ), centre t(T),
+    /// left 2·t(T) − t(δ).
+    fn of(flank: Flank, zref: ThreadZRef, t_target: i64) -> FlankZ {
+        let groove = zref == ThreadZRef::Groove;
+        match flank {
+            Flank::Right => FlankZ { base: 0, mul: 1 },
+            Flank::Centre => FlankZ { base: if groove { t_target } else { 0 }, mul: 0 },
+            Flank::Left => FlankZ { base: if groove { t_target.saturating_mul(2) } else { 0 }, mul: -1 },
+        }
+    }
+}
+
 /// G76.MODE / G78.MODE: the flanks of the rough passes, (even n, odd n).
 fn flanks(code: Code, mode: u32) -> (Flank, Flank) {
     match (code, mode) {
@@ -99,8 +122,8 @@ fn flanks(code: Code, mode: u32) -> (Flank, Flank) {
 /// The pass plan of a multi-pass cycle and its fixed geometry.
 #[derive(Clone, Copy, Debug)]
 pub struct Multi {
-    /// The flanks of even and odd rough passes (G76.MODE, G78.MODE).
-    flanks: (Flank, Flank),
+    /// The Z offsets of even and odd rough passes (G76.MODE, G78.MODE, thread.zref).
+    flanks: (FlankZ, FlankZ),
     sched: Schedule,
     /// The current rough pass, `None` once finishing.
     rough: Option<Rough>,
@@ -122,8 +145,8 @@ pub struct Multi {
     w: i64,
     /// tan(a/2), a the tool angle (looked up once; a is a legal word, ≤ 178 half degrees).
     tan: Tan,
-    /// t(T) = round(T·tan(a/2)).
-    t_target: i64,
+    /// G76.FINISH.Z: the Z offset of the last rough pass, where the finishing passes cut.
+    finish_off: i64,
 }
 
 impl Multi {
@@ -142,18 +165,21 @@ impl Multi {
         Cut { p0: (x, z), end: (x.wrapping_add(self.taper), z.wrapping_add(self.w)) }
     }
 
+    /// The Z offset (before σ) of flank `f` at depth δ.
+    #[inline(always)]
+    fn offset(&self, f: FlankZ, depth: i64) -> i64 {
+        if f.mul == 0 {
+            return f.base;
+        }
+        f.base.saturating_add(f.mul.saturating_mul(self.t(depth)))
+    }
+
     /// The cut of rough pass `r` (G76.DEPTH.*, G76.MODE, G78.MODE). Inlined into the pass
     /// change, which keeps its state in registers (outlined, it cost ~20 instructions a pass).
     #[inline(always)]
     fn rough_cut(&self, r: &Rough) -> Cut {
-        let flank = if r.n % 2 == 1 { self.flanks.1 } else { self.flanks.0 };
-        let off = match flank {
-            Flank::Right => self.t(r.depth),
-            Flank::Centre => self.t_target,
-            // The mirror of the right flank about the centre.
-            Flank::Left => self.t_target.saturating_mul(2).saturating_sub(self.t(r.depth)),
-        };
-        self.cut(r.depth, off)
+        let f = if r.n % 2 == 1 { self.flanks.1 } else { self.flanks.0 };
+        self.cut(r.depth, self.offset(f, r.depth))
     }
 
     /// The header of the current pass: a rough pass (G76.DEPTH.*), or a finishing pass at
@@ -196,7 +222,7 @@ impl Multi {
         }
         self.finish += 1;
         // G76.FINISH.Z: at the Z of the last rough pass.
-        Some(self.cut(self.k, self.t_target))
+        Some(self.cut(self.k, self.finish_off))
     }
 }
 
@@ -261,8 +287,15 @@ pub fn cycle(
         }
     }
     let s = sat(s);
+    // Beyond 89° (never a legal word): 0, as `mul_tan`.
+    let tan = Tan::half_degrees(first.a).unwrap_or(Tan::ZERO);
+    let t_target = i64::try_from(tan.times(target.max(0).unsigned_abs())).unwrap_or(i64::MAX);
+    let zref = config.readings.thread_zref;
+    let (even, odd) = flanks(code, first.mode);
+    // The last rough pass (n = `rough`, at depth T) sets the finishing passes' Z.
+    let last = FlankZ::of(if rough % 2 == 1 { odd } else { even }, zref, t_target);
     let mut multi = Multi {
-        flanks: flanks(code, first.mode),
+        flanks: (FlankZ::of(even, zref, t_target), FlankZ::of(odd, zref, t_target)),
         sched,
         rough: None,
         finish: 0,
@@ -274,11 +307,10 @@ pub fn cycle(
         k: sec.k,
         taper: sat(-2 * i128::from(sec.i)),
         w,
-        // Beyond 89° (never a legal word): 0, as `mul_tan`.
-        tan: Tan::half_degrees(first.a).unwrap_or(Tan::ZERO),
-        t_target: 0,
+        tan,
+        finish_off: 0,
     };
-    multi.t_target = multi.t(target);
+    multi.finish_off = multi.offset(last, target);
     let cut = multi.begin();
     let path = Path {
         a,

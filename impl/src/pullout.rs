@@ -20,11 +20,19 @@ pub fn tenths_of_lead(tenths: u32, lead: i64, grid: Grid) -> i64 {
     i64::try_from(div_round(num, den)).unwrap_or(i64::MAX)
 }
 
-/// G92.JK.1–G92.JK.6 as one function of J and K (absolute values, G92.JK.7) and the No.19
-/// amount `c`; `None` when no pull-out is made (a resolved amount of 0).
-pub fn g92_amounts(j: Option<i64>, k: Option<i64>, c: i64) -> Option<Amounts> {
+/// round(k·tan(angle_deg)) (the chamfer angle 5131, 1…89°: exact, [`mul_tan`]).
+fn short_leg(k: i64, angle_deg: u32) -> i64 {
+    let v = mul_tan(k.max(0).unsigned_abs(), angle_deg.saturating_mul(2));
+    i64::try_from(v).unwrap_or(i64::MAX)
+}
+
+/// G92.JK.1–G92.JK.6 as one function of J and K (absolute values, G92.JK.7), the No.19
+/// amount `c` and the chamfer angle 5131 in degrees; `None` when no pull-out is made (a
+/// resolved amount of 0). JK.1 (both omitted): K = c, J = round(c·tan 5131°) (No.5131 for
+/// G92, `000_…` line 79); JK.2 (J omitted, K given): J = c (M002 note 3).
+pub fn g92_amounts(j: Option<i64>, k: Option<i64>, c: i64, angle_deg: u32) -> Option<Amounts> {
     let (j, k) = match (j, k) {
-        (None, None) => (c, c),              // G92.JK.1
+        (None, None) => (short_leg(c, angle_deg), c), // G92.JK.1
         (None, Some(0)) => (c, c),           // G92.JK.2 with K = 0 read as JK.5
         (None, Some(k)) => (c, k),           // G92.JK.2
         (Some(0), _) => (0, 0),              // G92.JK.4, G92.JK.6
@@ -37,10 +45,7 @@ pub fn g92_amounts(j: Option<i64>, k: Option<i64>, c: i64) -> Option<Amounts> {
 /// G76.PULLOUT / G78.PULLOUT: J and K of the second block, the chamfer width (r or 5130 tenths
 /// of the lead, already on the grid) and the chamfer angle 5131 in degrees. `None`: no pull-out.
 pub fn multi_amounts(j: Option<i64>, k: Option<i64>, chamfer: i64, angle_deg: u32) -> Option<Amounts> {
-    let j_of = |k: i64| -> i64 {
-        let v = mul_tan(k.max(0).unsigned_abs(), angle_deg.saturating_mul(2));
-        i64::try_from(v).unwrap_or(i64::MAX)
-    };
+    let j_of = |k: i64| short_leg(k, angle_deg);
     let (j, k) = match (j, k) {
         (None, None) => (j_of(chamfer), chamfer),
         (None, Some(k)) => (j_of(k), k),
@@ -110,15 +115,20 @@ mod tests {
     #[test]
     fn g92_jk_table() {
         let c = 30;
-        assert_eq!(g92_amounts(None, None, c), Some(Amounts { j: 30, k: 30 }));
-        assert_eq!(g92_amounts(None, Some(5), c), Some(Amounts { j: 30, k: 5 }));
-        assert_eq!(g92_amounts(None, Some(0), c), Some(Amounts { j: 30, k: 30 }));
-        assert_eq!(g92_amounts(Some(0), None, c), None);
-        assert_eq!(g92_amounts(Some(0), Some(7), c), None);
-        assert_eq!(g92_amounts(Some(4), None, c), Some(Amounts { j: 4, k: 4 }));
-        assert_eq!(g92_amounts(Some(4), Some(0), c), Some(Amounts { j: 4, k: 4 }));
-        assert_eq!(g92_amounts(Some(4), Some(9), c), Some(Amounts { j: 4, k: 9 }));
-        assert_eq!(g92_amounts(None, None, 0), None);
+        assert_eq!(g92_amounts(None, None, c, 45), Some(Amounts { j: 30, k: 30 }));
+        // No.5131 for G92: JK.1 only; J = round(30·tan 30°) = round(17.32) = 17.
+        assert_eq!(g92_amounts(None, None, c, 30), Some(Amounts { j: 17, k: 30 }));
+        assert_eq!(g92_amounts(None, Some(5), c, 30), Some(Amounts { j: 30, k: 5 }));
+        assert_eq!(g92_amounts(None, Some(0), c, 30), Some(Amounts { j: 30, k: 30 }));
+        assert_eq!(g92_amounts(Some(4), None, c, 30), Some(Amounts { j: 4, k: 4 }));
+        assert_eq!(g92_amounts(None, Some(5), c, 45), Some(Amounts { j: 30, k: 5 }));
+        assert_eq!(g92_amounts(None, Some(0), c, 45), Some(Amounts { j: 30, k: 30 }));
+        assert_eq!(g92_amounts(Some(0), None, c, 45), None);
+        assert_eq!(g92_amounts(Some(0), Some(7), c, 45), None);
+        assert_eq!(g92_amounts(Some(4), None, c, 45), Some(Amounts { j: 4, k: 4 }));
+        assert_eq!(g92_amounts(Some(4), Some(0), c, 45), Some(Amounts { j: 4, k: 4 }));
+        assert_eq!(g92_amounts(Some(4), Some(9), c, 45), Some(Amounts { j: 4, k: 9 }));
+        assert_eq!(g92_amounts(None, None, 0, 45), None);
     }
 
     #[test]

@@ -281,17 +281,20 @@ fn multistart() {
     let m = moves(&t);
     assert_eq!((m[1].kind, m[1].x), (MoveKind::Rapid, 30_100));
     assert_eq!((m[2].kind, m[2].x, m[2].z, m[2].rule), (MoveKind::Thread, 29_100, m[1].z, Rule::G76LeadIn));
-    let t = expand("G0 X35 Z5\nG92 X29.2 Z-20 F3 L7\n", Config::default());
+    // (From X36: the default pull-out, J = one lead, ends at X35.2 — beyond X35, G92.PATH ③.)
+    let t = expand("G0 X36 Z5\nG92 X29.2 Z-20 F3 L7\n", Config::default());
     let angles: Vec<u32> = t.moves().filter(|m| m.kind == MoveKind::Thread).map(|m| m.angle).collect();
     assert_eq!(angles.len(), 14);
     assert_eq!(angles[2], 51_429);
     assert_eq!(passes(&t).len(), 1);
 }
 
-/// G76.MODE / G78.MODE: flank sequences; every mode ends the last rough pass and the finish at
-/// A.z + σ·t(T).
+/// G76.MODE / G78.MODE under thread.zref = groove: flank sequences; every mode ends the last
+/// rough pass and the finish at A.z + σ·t(T). (The letter, `start`: `readings_tests`.)
 #[test]
 fn infeed_modes() {
+    let mut groove = Config::default();
+    groove.readings.thread_zref = cycle_vocab::readings::ThreadZRef::Groove;
     let base = "G00 X40 Z5;\nG76 P011060 Q0.08 R0.05 D0;\nG76 X27.4 Z-20 P1.3 Q0.4 F2 J1 K1;\n";
     let mut finish_z = Vec::new();
     for (code, mode) in [("G76", 0), ("G76", 1), ("G76", 2), ("G78", 0), ("G78", 1), ("G78", 2), ("G78", 3), ("G78", 4)] {
@@ -300,7 +303,7 @@ fn infeed_modes() {
         } else {
             base.replace("G76", "G78").replace("P011060", &std::format!("P010{mode}60")).replace("D0", "D1")
         };
-        let t = expand(&src, Config::default());
+        let t = expand(&src, groove);
         assert_eq!(t.alarm, None, "{src}");
         let z: Vec<i64> = t
             .events
@@ -361,10 +364,10 @@ fn pass_bound() {
     assert_eq!(t.alarm, alarm(AlarmCode::TooManyPasses, Some(b'Q'), Rule::PrjMaxPass, 3));
     // G92: L > max_passes.
     let cfg = Config { params: Params { max_passes: Some(2), ..Params::default() }, ..Config::default() };
-    let t = expand("G0 X35 Z5\nG92 X29.2 Z-20 F3 L3\n", cfg);
+    let t = expand("G0 X36 Z5\nG92 X29.2 Z-20 F3 L3\n", cfg);
     assert_eq!(t.alarm, alarm(AlarmCode::TooManyPasses, Some(b'L'), Rule::PrjMaxPass, 2));
     // G92: L = max_passes is allowed.
-    let t = expand("G0 X35 Z5\nG92 X29.2 Z-20 F3 L2\n", cfg);
+    let t = expand("G0 X36 Z5\nG92 X29.2 Z-20 F3 L2\n", cfg);
     assert_eq!((t.alarm, passes(&t).len()), (None, 1));
 }
 

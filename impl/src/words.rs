@@ -101,18 +101,18 @@ pub fn signed_lead(n: Number, grid: Grid, max: i64, rule: Rule, at: At) -> Resul
     scaled_in(n, grid.lead_decimals(), -max, max, rule, at)
 }
 
-/// G162.A: the infeed angle in half degrees — read to 0.1° (more decimals: `PRECISION`,
-/// COM.UNITS), then a multiple of 0.5° (else `PRECISION`, G162.A), then |A| ≤ 89°
-/// (else `OUT OF RANGE`, G162.A).
+/// G162.A: the infeed angle in tenths of a degree — any tenth (more decimals: `PRECISION`,
+/// G162.A, as the register's word table says for A), then |A| ≤ 89° (else `OUT OF RANGE`,
+/// G162.A).
 pub fn infeed_angle(n: Number, at: At) -> Result<i64, Alarm> {
-    let tenths = n.scaled(1).map_err(|e| scale_error(e, at, Rule::G162A))?;
-    if tenths % 5 != 0 {
-        return Err(at.alarm(AlarmCode::Precision, Rule::G162A));
-    }
+    let tenths = n.scaled(1).map_err(|e| match e {
+        NumberError::Precision => at.alarm(AlarmCode::Precision, Rule::G162A),
+        e => scale_error(e, at, Rule::G162A),
+    })?;
     if tenths.unsigned_abs() > 890 {
         return Err(at.alarm(AlarmCode::OutOfRange, Rule::G162A));
     }
-    Ok(tenths / 5)
+    Ok(tenths)
 }
 
 /// COM.LEAD: F as lead counts (0.0001 mm / 0.00001 in), 1 … 99 990 000 (metric) or
@@ -200,12 +200,14 @@ mod tests {
     fn g162_words() {
         let g = Grid::METRIC_ISB;
         let at = At { letter: b'A', line: 2 };
-        assert_eq!(infeed_angle(num(false, 275, 1, true), at), Ok(55));
-        assert_eq!(infeed_angle(num(true, 30, 0, false), at), Ok(-60));
-        assert_eq!(infeed_angle(num(false, 89, 0, false), at), Ok(178));
-        assert_eq!(infeed_angle(num(false, 273, 1, true), at), Err(Alarm::new(AlarmCode::Precision, Some(b'A'), Rule::G162A, 2)));
-        assert_eq!(infeed_angle(num(false, 895, 1, true), at), Err(Alarm::new(AlarmCode::OutOfRange, Some(b'A'), Rule::G162A, 2)));
-        assert_eq!(infeed_angle(num(false, 2725, 2, true), at), Err(Alarm::new(AlarmCode::Precision, Some(b'A'), Rule::ComUnits, 2)));
+        // G162.A: tenths of a degree, any tenth; a second decimal is PRECISION under G162.A.
+        assert_eq!(infeed_angle(num(false, 275, 1, true), at), Ok(275));
+        assert_eq!(infeed_angle(num(true, 30, 0, false), at), Ok(-300));
+        assert_eq!(infeed_angle(num(false, 89, 0, false), at), Ok(890));
+        assert_eq!(infeed_angle(num(false, 273, 1, true), at), Ok(273));
+        assert_eq!(infeed_angle(num(true, 889, 1, true), at), Ok(-889));
+        assert_eq!(infeed_angle(num(false, 891, 1, true), at), Err(Alarm::new(AlarmCode::OutOfRange, Some(b'A'), Rule::G162A, 2)));
+        assert_eq!(infeed_angle(num(false, 2735, 2, true), at), Err(Alarm::new(AlarmCode::Precision, Some(b'A'), Rule::G162A, 2)));
         assert_eq!(signed_lead(num(true, 5, 1, true), g, 99_990_000, Rule::G162I, at), Ok(-5_000));
         assert_eq!(
             signed_lead(num(false, 10_000, 0, false), g, 99_990_000, Rule::G162I, at),

@@ -26,8 +26,10 @@
 //!   line min(s·C.x, s·D.x) and max(s·A.x, s·C.x + 2k + 2E, s·D.x + 2k + 2J*), where J* bounds
 //!   the resolved pull-out (the larger of |J|, |K| and the No.19 / chamfer amount); on Z
 //!   within the hull of A.z, D.z (and D.z − sign(W)·J* when X is the long axis), widened on
-//!   the infeed side by 2·t*, t* = ⌊T·a/84⌋ + 1 ≥ round(T·tan(a/2)) for a ≤ 99° (tan is convex:
-//!   tan(a/2) ≤ a·tan(49.5°)/99 < a/84), T = k − d.
+//!   both sides by 2·t*, t* = ⌊T·a/84⌋ + 1 ≥ round(T·tan(a/2)) for a ≤ 99° (tan is convex:
+//!   tan(a/2) ≤ a·tan(49.5°)/99 < a/84), T = k − d (thread.zref: under `groove` the left
+//!   flank reaches 2·t(T) on the infeed side; under `start`, the letter, it goes t(δ) ≤ t(T)
+//!   the other way).
 //! - Thread moves carry the programmed lead and a start angle below 360°.
 //! - The tool ends where it started (G76.PATH, G92.PATH: every pass returns to A).
 //!
@@ -271,8 +273,8 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     let x_hi = (s * ax).max(s * cx + 2 * k + 2 * e_len).max(s * dx + 2 * k + 2 * pull_bound);
     let pull_z = if x_long { dz - w.signum() * pull_bound } else { dz };
     let shift = if code == 0 { 0 } else { 2 * t_star };
-    let z_lo = az.min(dz).min(pull_z) - if s > 0 { shift } else { 0 };
-    let z_hi = az.max(dz).max(pull_z) + if s < 0 { shift } else { 0 };
+    let z_lo = az.min(dz).min(pull_z) - shift;
+    let z_hi = az.max(dz).max(pull_z) + shift;
 
     // Run: at most 7·max_passes events, one alarm, then None.
     let bound = 7 * max_passes as usize;

@@ -5,14 +5,18 @@
 //! any pitch change I (−Fmax…Fmax), any J (absent or 0.001…999 999.999°), any grid, external
 //! or internal, any start point, the production expander's trace
 //!
-//! - either is `GEOMETRY` on I (G162.I) before any motion — exactly when I > 0 and the lead at
-//!   the end of the thread, L² = F² + 720 000·I·s/J (s = Z travel in lead counts), would pass
-//!   the F maximum, decided here in integers: J·F² + 720 000·I·s > J·Fmax²;
+//! - either is `GEOMETRY` on I (G162.I) before any motion — exactly when I > 0 and the lead
+//!   would pass the F maximum within the thread (s = Z travel in lead counts), decided here in
+//!   integers by the declared reading g162.lead (both drawn): `continuous`, the lead at the end
+//!   L² = F² + 720 000·I·s/J: J·F² + 720 000·I·s > J·Fmax²; `steps` (the letter), the first
+//!   step above Fmax, k* = ⌊(Fmax − F)/I⌋ + 1, starts before the end:
+//!   (2·k*·F + I·k*·(k* − 1))·J < 720 000·s;
 //! - or its thread moves all have lead F ≥ 1 and the register's variable lead: I = 0, or I < 0
 //!   with F ≤ |I|: the constant form (change, angle, floor all 0); I < 0 with F > |I|: change I
 //!   over J (360 000 when omitted) and floor |I| ≥ 1 < F — so the shrinking lead starts above
 //!   its floor and stops there: **it never reaches ≤ 0**; I > 0: change I over J, no floor, the
-//!   end lead within the F range (above);
+//!   end lead within the F range (above); `lead_steps` exactly when the lead changes under
+//!   `steps`;
 //! - and the pass headers' depths strictly increase, never pass P, end exactly at P (0 for a
 //!   single pass); each thread cuts at X0 − 2s·depth to Ze; the tool ends at the start point.
 //!
@@ -32,6 +36,7 @@ use crate::source::{Outcome, Source};
 use crate::{check, cover};
 use cycle_impl::Expander;
 use cycle_impl::MAX_LENGTH;
+use cycle_vocab::readings::G162Lead;
 use cycle_vocab::{AlarmCode, Config, Dialect, Event, MoveKind, Rule};
 
 /// The ranges a run draws from.
@@ -84,6 +89,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
         _ => i_sign * src.bounded_i64(f, max_lead),
     };
     let j = if src.bool() { Some(src.bounded_i64(1, 999_999_999)) } else { None };
+    let stepped = src.bool();
 
     let mut prog = Program::new();
     prog.text(b"G162");
@@ -102,14 +108,21 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     prog.end_block();
     src.note_program(prog.bytes());
     check!(src, !prog.overflowed() && prog.len() <= scope.max_program, "the program fits the scope's buffer bound");
-    let config = Config { dialect: Dialect::Nc201, grid, start_x: sx, start_z: sz, ..Config::default() };
+    let mut config = Config { dialect: Dialect::Nc201, grid, start_x: sx, start_z: sz, ..Config::default() };
+    config.readings.g162_lead = if stepped { G162Lead::Steps } else { G162Lead::Continuous };
 
     // Expected, from the words alone.
     let jj = j.unwrap_or(360_000);
     let s_lead = i128::from(travel) * i128::from(grid.lead_counts_per_increment());
     let too_fast = i > 0
-        && i128::from(jj) * i128::from(f) * i128::from(f) + 720_000 * i128::from(i) * s_lead
-            > i128::from(jj) * i128::from(fmax) * i128::from(fmax);
+        && if stepped {
+            let (f, ii) = (i128::from(f), i128::from(i));
+            let k = (i128::from(fmax) - f) / ii + 1;
+            (2 * k * f + ii * k * (k - 1)) * i128::from(jj) < 720_000 * s_lead
+        } else {
+            i128::from(jj) * i128::from(f) * i128::from(f) + 720_000 * i128::from(i) * s_lead
+                > i128::from(jj) * i128::from(fmax) * i128::from(fmax)
+        };
     let constant = i == 0 || (i < 0 && f <= -i);
     let depths_model = split.map(|(p, q)| model::split(p, q));
     let final_depth = split.map_or(0, |(p, _)| p);
@@ -169,6 +182,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
                         "G162.PATH ②: the thread cuts at X0 − 2s·depth to Ze"
                     );
                     check!(src, m.feed == f && m.feed >= 1, "G162.F: the thread starts at the lead F");
+                    check!(src, m.lead_steps == (stepped && !constant), "g162.lead: steps exactly when stepped and changing");
                     if constant {
                         check!(
                             src,
@@ -211,6 +225,8 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     }
 
     cover!(src, too_fast, "growing pitch refused");
+    cover!(src, too_fast && stepped, "growing stepped pitch refused");
+    cover!(src, i > 0 && !too_fast && stepped, "growing stepped pitch");
     cover!(src, i > 0 && !too_fast, "growing pitch");
     cover!(src, i < 0 && !constant, "shrinking pitch with a floor");
     cover!(src, i < 0 && constant, "shrinking pitch already at its floor");

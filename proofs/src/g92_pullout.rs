@@ -20,8 +20,9 @@
 //! (Z long: start K before D.z on the thread line, end at D.z and D.x + s·J; X long: start at
 //! D.x + sign(R)·K, end at D.x and D.z − sign(W)·J), the pull-out move naming G92.PULLOUT; a
 //! K not below the long-axis travel is `GEOMETRY` on K (G92.PULLOUT) and an illegal taper
-//! `GEOMETRY` on R (G92.TAPER), before any motion. The pass header and the return to A are
-//! checked too.
+//! `GEOMETRY` on R (G92.TAPER), and an X where step ③ starts (the pull-out's end, else D.x)
+//! beyond A.x `GEOMETRY` on J (on X when D.x itself is beyond; G92.PATH, step ③ opposite to ①,
+//! the last check), before any motion. The pass header and the return to A are checked too.
 //!
 //! **Not a Kani proof.** Kani 0.61.0 / CBMC 6.4.0 ran out of memory in symbolic execution (issue #25): the symbolic program text unrolls the lexer's loops. Its parts below the lexer (the J/K table, the pull-out geometry, the No.19 amount) are the Kani harness `g92_pullout_geometry`. The body runs under `cargo test` (bounded-exhaustive and random
 //! drivers); the scope named `KANI` below is what a Kani run would take, kept for the drivers.
@@ -143,6 +144,13 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     let travel = if z_long { w_mag } else { r.abs() };
     let k_bad = amounts.is_some_and(|(_, rk)| rk >= travel);
     let sz = w.signum();
+    // G92.PATH step ③ (DEPARTS): X₃ = the pull-out's end X (Z long) or D.x must not lie beyond A.x.
+    let x3 = match amounts {
+        Some((rj, _)) if z_long => dx + 2 * s * rj,
+        _ => dx,
+    };
+    let step3_bad = s * (ax - x3) < 0;
+    let step3_word = if s * (ax - dx) < 0 { b'X' } else { b'J' };
     let expected_threads: [Option<(i64, i64)>; 2] = match amounts {
         None => [Some((dx, dz)), None],
         Some((rj, rk)) if z_long => {
@@ -170,13 +178,16 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
             Some(Err(a)) => {
                 if taper_bad {
                     check!(src, a.code == AlarmCode::Geometry && a.word == Some(b'R') && a.rule == Rule::G92Taper, "G92.TAPER: an illegal taper is GEOMETRY on R");
-                } else {
-                    check!(src, k_bad, "only the expected alarms occur");
+                } else if k_bad {
                     check!(src, a.code == AlarmCode::Geometry && a.word == Some(b'K') && a.rule == Rule::G92Pullout, "G92.PULLOUT: K not below the long-axis travel is GEOMETRY on K");
+                } else {
+                    check!(src, step3_bad, "only the expected alarms occur");
+                    check!(src, a.code == AlarmCode::Geometry && a.word == Some(step3_word) && a.rule == Rule::G92Path, "G92.PATH: step ③ starting beyond A.x is GEOMETRY on J (X)");
                 }
                 check!(src, first_event, "the alarm comes before any motion");
                 check!(src, it.next().is_none(), "the alarm ends the trace");
                 cover!(src, k_bad && !taper_bad, "K beyond the travel");
+                cover!(src, step3_bad && !k_bad && !taper_bad, "step ③ from beyond A.x");
                 ended = true;
                 break;
             }
@@ -205,7 +216,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
         first_event = false;
     }
     check!(src, ended, "the G92 trace ends within eight events");
-    if !(taper_bad || k_bad) {
+    if !(taper_bad || k_bad || step3_bad) {
         let want = if amounts.is_some() { 2 } else { 1 };
         check!(src, threads == want, "a pull-out is two thread moves, no pull-out one");
         check!(src, pos == (ax, az), "G92.PATH ④: back at the start point");
@@ -220,6 +231,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     cover!(src, amounts.is_none() && !taper_bad, "no pull-out");
     cover!(src, !z_long && amounts.is_some() && !k_bad && !taper_bad, "X-long pull-out");
     cover!(src, taper_bad, "illegal taper");
+    cover!(src, amounts.is_some() && !(taper_bad || k_bad || step3_bad), "a pull-out run to its end");
     Ok(())
 }
 

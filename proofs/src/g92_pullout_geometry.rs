@@ -3,9 +3,11 @@
 //!
 //! **Property.** Three parts (one branch of the body each; Kani explores all of them):
 //!
-//! 0. `g92_amounts(J, K, c)`, J and K each absent, 0 or any legal positive value (G92.JK.7: the
-//!    words' absolute values), c the No.19 amount (0…N): the register's table — (none, none) →
-//!    (c, c) JK.1; (none, K) → (c, K), K = 0 read as JK.5 → (c, c) JK.2; (0, any) → no pull-out
+//! 0. `g92_amounts(J, K, c, 45)`, J and K each absent, 0 or any legal positive value (G92.JK.7:
+//!    the words' absolute values), c the No.19 amount (0…N), the chamfer angle 5131 at its
+//!    default 45° (No.5131 for G92: JK.1's J = round(c·tan 5131°), exact at 45°; other angles
+//!    are impl's unit tests, `pullout::tests`, `thread_points_tests`): the register's table —
+//!    (none, none) → (c, c) JK.1; (none, K) → (c, K), K = 0 read as JK.5 → (c, c) JK.2; (0, any) → no pull-out
 //!    JK.4/JK.6; (J, none) → (J, J) JK.3; (J, 0) → (J, J) JK.5; (J, K) → (J, K); a resolved
 //!    amount of 0 → no pull-out.
 //! 1. `offsets(amounts, W, R, s)` for any resolved J, K (1…N) with K below the long-axis travel
@@ -79,7 +81,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
                 (Some(j), Some(k)) => (j, k),
             };
             let want = if want.0 > 0 && want.1 > 0 { Some(Amounts { j: want.0, k: want.1 }) } else { None };
-            check!(src, g92_amounts(j, k, c) == want, "G92.JK.1–G92.JK.6: the register's table of J, K and No.19");
+            check!(src, g92_amounts(j, k, c, 45) == want, "G92.JK.1–G92.JK.6: the register's table of J, K and No.19");
             cover!(src, want.is_none(), "no pull-out");
             cover!(src, want.is_some_and(|a| a.j != a.k), "J and K differ");
         }

@@ -56,7 +56,9 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     let max_passes = src.bounded_u32(1, u32::MAX);
     let line = 7;
     let code = if g75 { PeckCode::G75 } else { PeckCode::G74 };
-    let w = Words { end, di, dk, relief, e, feed: 1 };
+    // g75.relief changes the relief's direction, never whether it moves: both readings (taken
+    // from the parity of e, no extra draw for the exhaustive driver's budget).
+    let w = Words { end, di, dk, relief, e, feed: 1, relief_minus_z: e % 2 == 0 };
 
     // The register, in i128, in the frame (peck axis p, step axis s): G74 p = Z, s = X (steps
     // 2Δi, pecks Δk); G75 p = X, s = Z (pecks 2Δi, steps Δk).
