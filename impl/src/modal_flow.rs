@@ -48,9 +48,9 @@ impl Machine {
         Ok(Flow::Call(Call { program: program.unsigned_abs(), repeats, line }))
     }
 
-    /// (3) An S word: an integer (`NOT INTEGER`, COM.RANGES, wherever written); in a G50 block
-    /// the maximum spindle speed, 1 … 99 999 (`OUT OF RANGE`, G50.SMAX). A surface speed or an
-    /// rpm has no range here (G84 checks the rpm it taps with).
+    /// (3) An S word under gsk and fanuc: an integer (`NOT INTEGER`, COM.RANGES, wherever
+    /// written); in a G50 block the maximum spindle speed, 1 … 99 999 (`OUT OF RANGE`,
+    /// G50.SMAX). A surface speed or an rpm has no range here (G84 checks the rpm it taps with).
     pub(super) fn speed_word(&self, g50: bool, n: Number, at: At) -> Result<(), Alarm> {
         if g50 {
             integer_in(n, 1, 99_999, Rule::G50Smax, at)?;

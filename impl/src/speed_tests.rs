@@ -31,8 +31,16 @@ fn s_values() {
     assert_eq!(alarm_of("G0 X1 S12.5"), al(AlarmCode::NotInteger, b'S', Rule::ComRanges, 1));
     // Under G97 and G96 an S has no range of its own.
     assert_eq!(alarm_of("S0\nG50 S10\nG96 S999999\n"), None);
-    // Values alphabetically: R before S, S before X.
+    // Values alphabetically: S before X.
     assert_eq!(alarm_of("G50 S0 X1000000"), al(AlarmCode::OutOfRange, b'S', Rule::G50Smax, 1));
+    // Under nc201 the section does not apply: S takes any number (PRJ.LEX).
+    let nc201 = Config { dialect: Dialect::Nc201, ..Config::default() };
+    assert_eq!(expand("G0 X1 S12.5
+G97 S-3.5
+", nc201).alarm, None);
+    // Under fanuc as under gsk.
+    let fanuc = Config { dialect: Dialect::Fanuc, ..Config::default() };
+    assert_eq!(expand("G0 X1 S12.5", fanuc).alarm, al(AlarmCode::NotInteger, b'S', Rule::ComRanges, 1));
 }
 
 /// G96.SMAX: a block that writes G96 needs a G50 S of an earlier block — at the end of check
