@@ -132,13 +132,14 @@ pub fn too_long(line: u32) -> Alarm {
 }
 
 /// CNT.FIND for G70: the contour stands before the G70 block, the `before`-th block read by a
-/// reader of `src`. The program text is read again from its start, in bounded memory: N(ns)
+/// reader of `src` from `origin` (the running program's first block: the text's start, or a
+/// subprogram's O block). The program is read again from there, in bounded memory: N(ns)
 /// must be the N of exactly one of those blocks (else `BLOCK NOT FOUND` on P), and the first
 /// N(nf) at or after it must come within [`MAX_BLOCKS`] blocks (a 1 001st block without it:
 /// `CONTOUR TOO LONG` on Q) and before the G70 block (else `BLOCK NOT FOUND` on Q). Returns
 /// where the ns block stands. Work: one pass over the blocks before the G70 block.
-pub fn find_before(src: &[u8], before: u64, ns: u64, nf: u64, line: u32) -> Result<Mark, Alarm> {
-    let mut reader = Blocks::new(src);
+pub fn find_before(src: &[u8], origin: Mark, before: u64, ns: u64, nf: u64, line: u32) -> Result<Mark, Alarm> {
+    let mut reader = Blocks::resume(src, origin);
     let mut block = Block::new();
     let mut first: Option<Mark> = None;
     let mut ns_count = 0u32;
@@ -195,11 +196,12 @@ mod tests {
         assert_eq!(core::mem::size_of::<[Element; MAX_BLOCKS]>(), 48_000);
         assert!(core::mem::size_of::<Contour>() <= 48_016);
         // The uninterrupted expander; its configuration carries the operator script (16
-        // actions, ~260 bytes), hence the bound over 50 000.
+        // actions, ~260 bytes) and it holds the subprogram call stack (`sub::Calls`, 248
+        // bytes), hence the bound over 50 000.
         assert!(core::mem::size_of::<crate::Core<'_>>() < 50_500);
         // The operator layer (OP.SCRIPT): script, one cut, look-ahead, output queue.
         assert!(core::mem::size_of::<crate::operator::Layer>() <= 2_400);
-        assert!(core::mem::size_of::<crate::Expander<'_>>() < 52_500);
+        assert!(core::mem::size_of::<crate::Expander<'_>>() < 52_800);
         let mut c = Contour::new();
         assert!(c.is_empty() && c.elements.is_none());
         for i in 0..MAX_BLOCKS {

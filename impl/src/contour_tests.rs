@@ -785,7 +785,7 @@ fn g70_alarms() {
     // refused in a contour reaches the G70: an M code, an O word, a G04…
     assert_eq!(a("N50 G1 X20 F1\nZ-5 M8\nN60 Z-10\n", "G70 P50 Q60"), al(AlarmCode::WordNotAllowed, b'M', Rule::CntWords, 3));
     assert_eq!(a("N50 G1 X20 F1\nO5\nN60 Z-10\n", "G70 P50 Q60"), al(AlarmCode::WordNotAllowed, b'O', Rule::CntWords, 3));
-    assert_eq!(a("N50 G1 X20 F1\nG96 S100\nN60 Z-10\n", "G70 P50 Q60"), al(AlarmCode::WordNotAllowed, b'G', Rule::CntWords, 3));
+    assert_eq!(a("N50 G1 X20 F1\nG97 S100\nN60 Z-10\n", "G70 P50 Q60"), al(AlarmCode::WordNotAllowed, b'G', Rule::CntWords, 3));
     assert_eq!(a("N50 X20 F1\nN60 Z-10\n", "G70 P50 Q60"), al(AlarmCode::MissingWord, b'G', Rule::CntFirst, 2));
     assert_eq!(a("N50 G3 X60 Z0 R5 F1\nN60 G1 Z-10\n", "G70 P50 Q60"), al(AlarmCode::WordNotAllowed, b'G', Rule::CntFirst, 2));
     // No monotonicity for G70.

@@ -146,7 +146,8 @@ fn alarms() {
     assert_eq!(alarm_of("M29\nG80\nG84 Z-5 F1\n"), al(Unsupported, b'G', Rule::G84Format, 3));
     assert_eq!(alarm_of("M29\nG84 Z-5 F1\nG84 Z-5 F1\n"), al(Unsupported, b'G', Rule::G84Format, 3));
     assert_eq!(alarm_of("G98 M29 G84 Z-5 F60\n"), al(MissingWord, b'S', Rule::G84Format, 1));
-    assert_eq!(alarm_of("S60.5\nG98 M29 G84 Z-5 F60\n"), al(NotInteger, b'S', Rule::ComRanges, 2));
+    // S with a point is NOT INTEGER where it is written.
+    assert_eq!(alarm_of("S60.5\nG98 M29 G84 Z-5 F60\n"), al(NotInteger, b'S', Rule::ComRanges, 1));
     assert_eq!(alarm_of("S0\nG98 M29 G84 Z-5 F60\n"), al(OutOfRange, b'S', Rule::G84Format, 2));
     assert_eq!(alarm_of("G98 M29 S100000 G84 Z-5 F60\n"), al(OutOfRange, b'S', Rule::G84Format, 1));
     assert_eq!(alarm_of("G98 M29 S99999 G84 Z-5 F0.0001\n"), al(OutOfRange, b'F', Rule::G84Format, 1));

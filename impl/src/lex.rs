@@ -168,6 +168,11 @@ pub struct Mark {
     line: u32,
 }
 
+impl Mark {
+    /// The start of a text (a placeholder before any reader stood anywhere).
+    pub const ZERO: Mark = Mark { pos: 0, line: 1 };
+}
+
 /// The UTF-8 byte-order mark, skipped as the program's first three bytes (PRJ.LEX).
 const BOM: [u8; 3] = [0xEF, 0xBB, 0xBF];
 
@@ -183,6 +188,12 @@ impl<'a> Blocks<'a> {
     /// blocks (CNT.FIND: the contour of a G70 is read again from its first block).
     pub fn resume(src: &'a [u8], mark: Mark) -> Blocks<'a> {
         Blocks { src, pos: mark.pos, line: mark.line, done: false, count: 0 }
+    }
+
+    /// A reader of `src` from `mark` that counts `count` blocks read already (SUB.RETURN: the
+    /// caller's reader again, after its M98 block).
+    pub fn resume_counted(src: &'a [u8], mark: Mark, count: u64) -> Blocks<'a> {
+        Blocks { count, ..Blocks::resume(src, mark) }
     }
 
     /// Where the reader stands: the next [`Blocks::read`] reads the block after this place.

@@ -18,14 +18,16 @@
 //! [`arc`] (G02/G03: centres, tolerance, sweeps, exact roundings), [`contour`] (the contour
 //! buffer, CNT.FIND for G70), `rough` (G71/G72: checks, layer count, layers, semi-finish pass),
 //! `finish` (G70), `g73` (pattern repeating over the contour buffer), `g74` (G74/G75 pecks and
-//! columns), `g83` (peck drilling), `g84` (rigid tapping), `config`;
+//! columns), `g83` (peck drilling), `g84` (rigid tapping), `sub` (subprograms M98/M99: the call
+//! stack, the area and its search), `config`;
 //! `operator` (operator events: feed hold, cycle start, single block, reset — OP.SCRIPT —
 //! between the generators and the caller).
 //!
 //! **Memory.** An [`Expander`] holds the block being read (~0.5 KB), the machine state, what
-//! runs, and the contour buffer of the contour cycles: [`contour::MAX_BLOCKS`] (CNT.MAX,
-//! 1 000) elements of 48 bytes, 48 000 bytes, initialised on the first contour cycle (a
-//! program without one writes none of it; G73 shares it). Nothing else grows with the program:
+//! runs, the subprogram call stack (`sub`: 4 frames, 248 bytes; SUB.NEST), and the contour
+//! buffer of the contour cycles: [`contour::MAX_BLOCKS`] (CNT.MAX, 1 000) elements of 48 bytes,
+//! 48 000 bytes, initialised on the first contour cycle (a program without one writes none of
+//! it; G73 shares it). Nothing else grows with the program:
 //! the canned cycles keep O(1) state (their pass, column, peck) and count their passes in closed
 //! form before any motion. The operator layer (`operator`, OP.SCRIPT) holds its script
 //! (16 actions), the events of one cut (`emit::START_EVENTS` = 7, for the repeat after a
@@ -36,7 +38,8 @@
 //! (COM.RANGES) and the start point too, so a block moves the machine by at most N from where it
 //! stands (an absolute word puts it within N of 0; a cycle returns to its start after excursions
 //! below 2^52): after B blocks every position is below (B + 1)·N, under 2^61 for any program of
-//! fewer than 2^31 blocks (over 20 GB of text). The arithmetic is written, and its bounds proved
+//! fewer than 2^31 blocks (over 20 GB of text; B counts the blocks run — a subprogram's once per
+//! run, at most `max_passes` runs, PRJ.MAXPASS). The arithmetic is written, and its bounds proved
 //! in each module, for positions below 2^62; beyond, it saturates (never wraps, never panics).
 #![no_std]
 #![forbid(unsafe_code)]
@@ -87,6 +90,7 @@ pub mod pullout;
 pub mod rough;
 mod run;
 pub mod schedule;
+mod sub;
 mod thread_move;
 mod words;
 
@@ -133,13 +137,21 @@ pub(crate) struct Core<'a> {
     /// outside [`Run`], so that it is written once, in place, by the contour reader and never
     /// copied: `Run` is moved by value; the running cycle keeps only its cursor.
     contour: Contour,
+    /// The subprogram call stack (SUB.*: four frames, fixed); `blocks` reads the running
+    /// program, main or subprogram.
+    calls: sub::Calls,
 }
 
-/// What the block interpreter may read besides the block: the program's reader (a G71/G72 reads
-/// its contour ahead; a G70 reads the text again from its start) and the contour buffer.
+/// What the block interpreter may read besides the block: the running program's reader (a
+/// G71/G72 reads its contour ahead; a G70 reads the running program again from its first block,
+/// `origin`), the contour buffer, and whether a subprogram runs (SUB.RETURN).
 pub(crate) struct Program<'p, 'a> {
     pub blocks: &'p mut Blocks<'a>,
     pub contour: &'p mut Contour,
+    /// Where the running program's first block stands: the text's start, or the running
+    /// subprogram's O block (CNT.FIND).
+    pub origin: lex::Mark,
+    pub in_subprogram: bool,
 }
 
 impl<'a> Expander<'a> {
@@ -178,6 +190,7 @@ impl<'a> Core<'a> {
             done: false,
             pending: None,
             contour: Contour::new(),
+            calls: sub::Calls::new(program),
         }
     }
 
@@ -304,14 +317,31 @@ impl Core<'_> {
 
     /// With nothing running: reads the next block into what it runs (possibly
     /// nothing); `false` when the program is over (its end, or the block after M02/M30). An
-    /// alarm is for the caller to [`fail`](Core::fail) with.
+    /// alarm is for the caller to [`fail`](Core::fail) with. An M98 or M99 block moves the
+    /// reader to the subprogram or back ([`sub::Calls`]) and runs nothing: no event.
     fn read_block(&mut self) -> Result<bool, Alarm> {
-        if self.ended || !self.blocks.read(&mut self.block)? {
+        if self.ended {
             self.done = true;
             return Ok(false);
         }
-        let mut program = Program { blocks: &mut self.blocks, contour: &mut self.contour };
-        self.ended = self.machine.block(&self.block, &mut self.run, &mut program)?;
+        if !self.blocks.read(&mut self.block)? {
+            // SUB.RETURN: the text ends inside a subprogram.
+            self.calls.end_of_text()?;
+            self.done = true;
+            return Ok(false);
+        }
+        let mut program = Program {
+            blocks: &mut self.blocks,
+            contour: &mut self.contour,
+            origin: self.calls.origin(),
+            in_subprogram: self.calls.in_subprogram(),
+        };
+        match self.machine.block(&self.block, &mut self.run, &mut program)? {
+            sub::Flow::Next => {}
+            sub::Flow::End => self.ended = true,
+            sub::Flow::Call(c) => self.calls.call(c, &mut self.blocks, self.machine.params.max_passes)?,
+            sub::Flow::Return => self.calls.ret(&mut self.blocks),
+        }
         Ok(true)
     }
 }
@@ -360,3 +390,9 @@ mod readings_tests;
 
 #[cfg(test)]
 mod readings_g162_tests;
+
+#[cfg(test)]
+mod sub_tests;
+
+#[cfg(test)]
+mod speed_tests;

@@ -12,6 +12,7 @@ use crate::lex::{letter_bit, letter_mask, Block};
 use crate::multipass::{Code, FirstBlock};
 use crate::rough::Axis;
 use crate::run::Run;
+use crate::sub::Flow;
 use crate::thread_move::ThreadCode;
 use crate::Program;
 use contour_blocks::FirstValues;
@@ -26,6 +27,8 @@ mod values;
 mod contour_blocks;
 #[path = "modal_canned.rs"]
 mod canned;
+#[path = "modal_flow.rs"]
+mod flow;
 
 /// The modal motion mode.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -92,6 +95,10 @@ struct Codes {
     absinc: Option<bool>,
     /// G80 was written (it ends an M29 not followed by G84).
     g80: bool,
+    /// G96 was written (G96.SMAX).
+    g96: bool,
+    /// M98 (`Some(true)`) or M99 (`Some(false)`): SUB.CALL, SUB.RETURN.
+    sub: Option<bool>,
 }
 
 /// The machine state carried from block to block.
@@ -131,8 +138,16 @@ pub struct Machine {
     rigid: bool,
     /// G98 (feed per minute) in force; G99 at the start (G84.FORMAT).
     per_minute: bool,
-    /// The last S word written (G84.FORMAT: the speed of the lead under G98).
+    /// G96.SPEED: the spindle speed in rpm — the last S written under G97 outside a G50 block
+    /// (G84.FORMAT: the speed of the lead under G98).
     spindle: Option<crate::number::Number>,
+    /// G96.SPEED: G96 (constant surface speed) in force; G97 at the start.
+    surface: bool,
+    /// G50.SMAX: a maximum spindle speed was set (a G50 S).
+    limited: bool,
+    /// G96.SMAX: the block being read writes G96 with no maximum set in an earlier block (its
+    /// alarm comes at the end of check step 4).
+    smax_due: bool,
 }
 
 /// The converted words of one block; `None` where absent.
@@ -232,21 +247,24 @@ impl Machine {
             rigid: false,
             per_minute: false,
             spindle: None,
+            surface: false,
+            limited: false,
+            smax_due: false,
         }
     }
 
     /// Reads one block: writes what it asks of the expander into `run` (in place: a cycle
-    /// is not copied on its way out) and returns whether it ends the program (M02, M30).
-    pub fn block(&mut self, b: &Block, run: &mut Run, prog: &mut Program<'_, '_>) -> Result<bool, Alarm> {
+    /// is not copied on its way out) and returns what comes next: the next block, the end
+    /// (M02, M30), a subprogram call (M98) or return (M99).
+    pub fn block(&mut self, b: &Block, run: &mut Run, prog: &mut Program<'_, '_>) -> Result<Flow, Alarm> {
         *run = Run::Idle;
         let line = b.line;
         let at = |letter: u8| At { letter, line };
-        let Codes { motion, end, absinc, g80 } = self.codes(b)?;
-        // G84.FORMAT: G80 ends rigid tapping, then an M29 of this block arms it; the last S.
+        let Codes { motion, end, absinc, g80, g96, sub } = self.codes(b, prog.in_subprogram)?;
+        // G84.FORMAT: G80 ends rigid tapping, then an M29 of this block arms it.
         self.rigid = (self.rigid && !g80) || b.get(b'M').is_some_and(|m| m.is(29));
-        if let Some(s) = b.get(b'S') {
-            self.spindle = Some(s);
-        }
+        // G96.SMAX: the maximum must come from an earlier block.
+        self.smax_due = g96 && !self.limited;
         let nc201 = self.config.dialect == Dialect::Nc201;
         let axis = if nc201 {
             b.has(b'X') || b.has(b'Z')
@@ -297,6 +315,15 @@ impl Machine {
                 Mode::Arc(cw) => Kind::Arc(cw),
             },
         };
+        // G50.SMAX, G96.SPEED: S in the block's state after its G codes — with G50 the maximum,
+        // else under G96 a surface speed, else (G97) the spindle speed in rpm.
+        if let Some(s) = b.get(b'S') {
+            if kind == Kind::G50 {
+                self.limited = true;
+            } else if !self.surface {
+                self.spindle = Some(s);
+            }
+        }
         // (2) conflicts: X/U, Z/W, and F/I in a thread block, where I is threads per inch (the
         // two-motion-code and G90/G91 conflicts are found in `codes`). Under nc201 U and W are
         // no incremental addresses and I is G162's pitch change, so none of these pairs exists
@@ -318,6 +345,10 @@ impl Machine {
         if let Some(incremental) = absinc {
             // NC201.ABSINC: modal, in force from the block that writes it.
             self.incremental = incremental;
+        }
+        // SUB.CALL, SUB.RETURN: an M98/M99 block's words, P, and the call or return.
+        if let Some(call) = sub {
+            return self.sub_block(b, call);
         }
         // (2) allowed words, alphabetically.
         let refused = b.mask() & !(allowed(kind, self.config.dialect) | COMMON);
@@ -362,14 +393,20 @@ impl Machine {
             Kind::G83 => self.g83(&v, line, run)?,
             Kind::G84 => self.g84(&v, line, run)?,
         }
-        Ok(end)
+        // G96.SMAX for a block whose handler has no step 5 (or did not reach it), then
+        // G96.RAPID.
+        self.speed_limit(line)?;
+        if kind == Kind::Rapid && axis {
+            self.rapid_under_g96(line)?;
+        }
+        Ok(if end { Flow::End } else { Flow::Next })
     }
 
     /// (2) PRJ.SUPPORTED, PRJ.DIALECT, COM.UNITS, PRJ.WORD, NC201.ABSINC, TNRC.*: the G codes in
     /// the order written, then M, then two motion/cycle codes, G90 with G91 (nc201), then the
     /// nose-radius rules — TNRC.NOARC, TNRC.SWITCH (G, then T), TNRC.RADIUS — which update the
     /// compensation in force.
-    fn codes(&mut self, b: &Block) -> Result<Codes, Alarm> {
+    fn codes(&mut self, b: &Block, in_subprogram: bool) -> Result<Codes, Alarm> {
         let line = b.line;
         let g_alarm = |code: AlarmCode, rule: Rule| Alarm::new(code, Some(b'G'), rule, line);
         let dialect = self.config.dialect;
@@ -380,6 +417,7 @@ impl Machine {
         let mut absincs = 0u32;
         let mut tnrc = false;
         let mut g80 = false;
+        let mut g96 = false;
         for g in b.g_codes() {
             if g.point || g.negative {
                 return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjSupported));
@@ -401,8 +439,15 @@ impl Machine {
                     tnrc |= matches!(g.mantissa, 40..=42);
                     // G98: feed per minute (G84.FORMAT's lead).
                     self.per_minute |= g.mantissa == 98;
+                    // G96.SPEED: constant surface speed from this block on.
+                    if g.mantissa == 96 {
+                        self.surface = true;
+                        g96 = true;
+                    }
                     continue;
                 }
+                // G163 (M004's tapping / die cycle): named, its motion not given.
+                163 if nc201 => return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::G163)),
                 // Under nc201 G90 is the absolute mode (below) and G94 is not defined; nor are the
                 // codes of the contour cycles (M003).
                 32 | 33 | 34 | 76 | 78 | 92 | 94 | 162 => return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjDialect)),
@@ -424,13 +469,18 @@ impl Machine {
                     self.per_minute = false;
                     continue;
                 }
-                18 | 20 | 21 | 40 | 97 => continue,
+                97 => {
+                    self.surface = false;
+                    continue;
+                }
+                18 | 20 | 21 | 40 => continue,
                 _ => return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjSupported)),
             }
             motions += 1;
             motion = Some(g.mantissa);
         }
         let mut end = false;
+        let mut sub = None;
         if let Some(m) = b.get(b'M') {
             let at = At { letter: b'M', line };
             if m.point {
@@ -440,6 +490,13 @@ impl Machine {
                 return Err(at.alarm(AlarmCode::UnsupportedCode, Rule::PrjSupported));
             }
             end = m.mantissa == 2 || m.mantissa == 30;
+            sub = match m.mantissa {
+                98 => Some(true),
+                // SUB.RETURN: M99 in the main program (FANUC restarts it endlessly).
+                99 if !in_subprogram => return Err(at.alarm(AlarmCode::Unsupported, Rule::SubReturn)),
+                99 => Some(false),
+                _ => None,
+            };
         }
         if motions > 1 {
             return Err(g_alarm(AlarmCode::Conflict, Rule::PrjWord));
@@ -451,7 +508,7 @@ impl Machine {
         if tnrc || b.has(b'T') {
             self.compensation(b, motion)?;
         }
-        Ok(Codes { motion, end, absinc, g80 })
+        Ok(Codes { motion, end, absinc, g80, g96, sub })
     }
 
     /// TNRC.NOARC, TNRC.SWITCH, TNRC.RADIUS (check step 2, after the two-motion-codes conflict):

@@ -12,7 +12,6 @@ use crate::g83;
 use crate::g84;
 use crate::g74::{self, PeckCode};
 use crate::run::Run;
-use crate::words::{integer_in, At};
 use crate::Program;
 use cycle_vocab::{Alarm, AlarmCode, Rule};
 use cycle_vocab::readings::{G73C, G75Relief};
@@ -34,12 +33,14 @@ impl PatternValues {
 
 impl Machine {
     /// (4) COM.LEAD: the feed of a cycle block (its F, else the modal feed), which becomes the
-    /// modal feed.
+    /// modal feed; then G96.SMAX, the end of step 4.
     pub(super) fn cycle_feed(&mut self, v: &Vals, line: u32) -> Result<i64, Alarm> {
         if let Some(f) = v.lead {
             self.feed = Some(f);
         }
-        self.feed.ok_or(Alarm::new(AlarmCode::MissingWord, Some(b'F'), Rule::ComLead, line))
+        let feed = self.feed.ok_or(Alarm::new(AlarmCode::MissingWord, Some(b'F'), Rule::ComLead, line))?;
+        self.speed_limit(line)?;
+        Ok(feed)
     }
 
     /// G74.FORMAT, G74.E: a first block keeps e for its code (G74's and G75's apart); R omitted
@@ -100,6 +101,7 @@ impl Machine {
         } else {
             (self.g73, b'R')
         };
+        self.speed_limit(line)?;
         let first = self.read_contour(prog.blocks, self.pos, ns, nf, true, line, prog.contour)?;
         contour::check_first(first, prog.contour.get(0).line)?;
         let words = g73::Words {
@@ -138,21 +140,16 @@ impl Machine {
     }
 
     /// G84.FORMAT, G84.PATH: (4) the feed; (5) rigid tapping armed (M29, else `UNSUPPORTED` on
-    /// G), under G98 the last S (none: `MISSING WORD S`; an integer 1 … 99 999, else `OUT OF
-    /// RANGE` on S), the lead, the levels; the run. The rigid-tapping mode ends with the cycle.
+    /// G), under G98 the rpm in force (`tapping_rpm`: under G96 `UNSUPPORTED` on G; none:
+    /// `MISSING WORD S`; an integer 1 … 99 999, else `OUT OF RANGE` on S), the lead, the levels;
+    /// the run. The rigid-tapping mode ends with the cycle.
     pub(super) fn g84(&mut self, v: &Vals, line: u32, run: &mut Run) -> Result<(), Alarm> {
         let feed = self.cycle_feed(v, line)?;
         if !self.rigid {
             return Err(Alarm::new(AlarmCode::Unsupported, Some(b'G'), Rule::G84Format, line));
         }
         self.rigid = false;
-        let speed = if self.per_minute {
-            let at = At { letter: b'S', line };
-            let s = self.spindle.ok_or(at.alarm(AlarmCode::MissingWord, Rule::G84Format))?;
-            Some(integer_in(s, 1, 99_999, Rule::G84Format, at)?)
-        } else {
-            None
-        };
+        let speed = if self.per_minute { Some(self.tapping_rpm(line)?) } else { None };
         *run = Run::Tap(g84::cycle(self.pos, &self.drill_words(v, feed), speed, line)?);
         Ok(())
     }

@@ -48,10 +48,12 @@ impl Machine {
             self.feed = Some(f);
         }
         let (feed, ns, nf) = self.cycle_words(v, line)?;
+        self.speed_limit(line)?;
         let src = prog.blocks.source();
-        // The G70 block is the last block the program's reader read.
+        // The G70 block is the last block the running program's reader read, counted from that
+        // program's first block (the main program's, or the subprogram's O block).
         let before = prog.blocks.blocks_read().saturating_sub(1);
-        let at = contour::find_before(src, before, ns, nf, line)?;
+        let at = contour::find_before(src, prog.origin, before, ns, nf, line)?;
         let mut reader = Blocks::resume(src, at);
         let first = self.read_contour(&mut reader, self.pos, ns, nf, false, line, prog.contour)?;
         // CNT.FIRST on the ns block's line (element 0 is always the ns block).
@@ -81,6 +83,7 @@ impl Machine {
             self.feed = Some(f);
         }
         let (feed, ns, nf) = self.cycle_words(v, line)?;
+        self.speed_limit(line)?;
         let first = self.read_contour(prog.blocks, self.pos, ns, nf, true, line, prog.contour)?;
         contour::check_first(first, prog.contour.get(0).line)?;
         let values = match axis {

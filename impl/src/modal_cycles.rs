@@ -45,6 +45,8 @@ impl Machine {
         let Some(lead) = self.feed else {
             return Err(Alarm::new(AlarmCode::MissingWord, Some(b'F'), Rule::ComLead, line));
         };
+        self.speed_limit(line)?;
+        let st = &mut self.g92;
         st.index = st.index.saturating_add(1);
         let st = *st;
         // A `match`, not `?`: `?` copies the cycle (~300 bytes) once more on its way out.
@@ -102,6 +104,7 @@ impl Machine {
         let lead = self.feed.ok_or(missing(b'F', Rule::ComLead))?;
         let k = v.p.ok_or(missing(b'P', Rule::G76Required))?;
         let dd = v.q.ok_or(missing(b'Q', Rule::G76Required))?;
+        self.speed_limit(line)?;
         // G78 J and K are modal, each word on its own; G76's belong to the block (OPEN).
         let (j, kk) = match code {
             Code::G76 => (v.j, v.k),
@@ -149,6 +152,7 @@ impl Machine {
             (ThreadCode::G34, None) => return Err(missing(b'K', Rule::G34)),
             (_, k) => k.unwrap_or(0),
         };
+        self.speed_limit(line)?;
         // P is 0…359 999 here.
         let p = v.p.and_then(|p| u32::try_from(p).ok()).unwrap_or(0);
         let to = Self::end_point(v, self.pos, self.pos);
@@ -181,6 +185,7 @@ impl Machine {
         let Some(feed) = self.feed else {
             return Err(Alarm::new(AlarmCode::MissingWord, Some(b'F'), Rule::ComLead, line));
         };
+        self.speed_limit(line)?;
         self.cut.index = self.cut.index.saturating_add(1);
         *run = Run::Cut(g90::cycle(code, &self.cut, self.pos, feed, line)?);
         Ok(())
@@ -247,6 +252,7 @@ impl Machine {
             (None, None, None) => return Err(missing(b'R', Rule::ArcFormat)),
             (None, i, k) => Centre::Ik(i.unwrap_or(0), k.unwrap_or(0)),
         };
+        self.speed_limit(line)?;
         let to = Self::end_point(v, self.pos, self.pos);
         arc::arc_move(self.pos, to, cw, words, feed, self.params.arc_tolerance, line).map(Some)
     }

@@ -23,6 +23,12 @@ impl Machine {
         let micro = self.config.dialect == Dialect::Fanuc;
         let n_max = MAX_LENGTH;
         let n_len = |lo: i64, rule: Rule| scaled_in(n, grid.decimals(), lo, MAX_LENGTH, rule, at);
+        // G50.SMAX, COM.RANGES: S in every kind of block under gsk and fanuc (under nc201 the
+        // section "Spindle speed" does not apply: S takes any number, PRJ.LEX "What the words
+        // mean").
+        if letter == b'S' && self.config.dialect != Dialect::Nc201 {
+            return self.speed_word(kind == Kind::G50, n, at);
+        }
         if kind == Kind::G162 {
             return self.value_g162(letter, n, at, v);
         }

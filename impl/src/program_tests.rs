@@ -70,7 +70,7 @@ fn g50_sets_the_position() {
 /// G50.SMAX: G96, G97, G98, G99 change no geometry; the feed is kept as written.
 #[test]
 fn spindle_and_feed_modes() {
-    let t = expand("G96 S200\nG98 G1 X1 F100\nG99 G97 Z-1\n", Config::default());
+    let t = expand("G50 S2000\nG96 S200\nG98 G1 X1 F100\nG99 G97 Z-1\n", Config::default());
     assert_eq!(t.alarm, None);
     assert_eq!(
         moves(&t),
@@ -119,7 +119,7 @@ fn new_codes_under_nc201() {
     assert_eq!(expand("G40 G0 X1", nc201()).alarm, None);
     // Under fanuc they are supported as under gsk.
     let f = Config { dialect: Dialect::Fanuc, ..Config::default() };
-    assert_eq!(expand("G50 X1 Z1\nG96 S100\nG98\nG41\nG40\n", f).alarm, None);
+    assert_eq!(expand("G50 X1 Z1 S2000\nG96 S100\nG98\nG41\nG40\n", f).alarm, None);
 }
 
 /// "The configuration is checked before the first block": 5132 outside 1…N, 5133 outside 0…N

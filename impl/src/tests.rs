@@ -386,11 +386,14 @@ fn zero_pullout_amounts_mean_no_pullout() {
     assert_eq!(t.moves().filter(|m| m.kind == MoveKind::Thread).count(), passes(&t).len());
 }
 
-/// PRJ.SUPPORTED: M codes up to M99 are read (M02/M30 end the program), M100 is refused.
+/// PRJ.SUPPORTED: M codes up to M99 are read (M02/M30 end the program), M100 is refused; M99
+/// in the main program is UNSUPPORTED (SUB.RETURN).
 #[test]
 fn m_code_range() {
-    let t = expand("G0 X1 Z1 M99\nG0 X2\n", Config::default());
+    let t = expand("G0 X1 Z1 M97\nG0 X2\n", Config::default());
     assert_eq!((t.alarm, moves(&t).len()), (None, 2));
+    let t = expand("G0 X1 Z1\nM99\n", Config::default());
+    assert_eq!(t.alarm, alarm(AlarmCode::Unsupported, Some(b'M'), Rule::SubReturn, 2));
     let t = expand("G0 X1 Z1\nM100\n", Config::default());
     assert_eq!(t.alarm, alarm(AlarmCode::UnsupportedCode, Some(b'M'), Rule::PrjSupported, 2));
 }

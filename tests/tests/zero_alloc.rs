@@ -117,3 +117,25 @@ fn expanding_any_cycle_allocates_nothing() {
     }
     assert!(total_events > 10_000, "the programs must exercise the expander ({total_events} events)");
 }
+
+/// Subprograms (M98/M99: the call stack is fixed, the area is searched in place) and the spindle
+/// rules (G50 S, G96, G97, G84's rpm) allocate nothing either, alarms included.
+#[test]
+fn subprograms_and_spindle_speed_allocate_nothing() {
+    let metric = Config::default();
+    let programs = [
+        // O1000 four times, each calling O2000 (nesting 2), then M30 in the main program.
+        "G50 S2000\nG0 X40 Z5\nM98 P41000\nG0 X60\nM30\nO1000\nG1 U-1 F0.2\nM98 P2000\nM99\nO2000\nG90 X30 Z-10 F0.3\nM99\n",
+        // G97 S60 taps at F / 60 under G98; G96 with its maximum; a rapid after G97.
+        "G50 X60 Z40 S1500\nG00 X0 Z0\nG97 S60\nG98 M29\nG84 Z-21 R2 F60\nG96 S200\nG1 X10 F1\nG97\nG0 X60\n",
+        // Alarms: recursion (NESTING), no M99, G96 without a maximum.
+        "M98 P1\nM30\nO1\nG0 U1\nM98 P1\nM99\n",
+        "M98 P3\nM30\nO3\nG0 X1\n",
+        "G96 S200\n",
+    ];
+    for program in programs {
+        let (events, alarmed, allocations) = expand_counting(program.as_bytes(), metric);
+        assert_eq!(allocations, 0, "the production expander allocated on:\n{program}");
+        assert_eq!(fill_counting(program.as_bytes(), metric), (events, alarmed, 0), "{program}");
+    }
+}
