@@ -78,9 +78,9 @@ fn example3_point_c() {
     visits_c("G0 X10 Z0\nG73 U-2 W1 R2\nG73 P1 Q2 U-0.4 W-0.3 F1\nN1 G1 X5\nN2 Z-5\n", 0, (5_600, 700));
 }
 
-/// G73.EXAMPLE: "ten passes, pass n offset by (2·round(1.8·(10 − n)) + 0.5, round(0.5·(10 − n))
-/// + 0.5) — the last one on the contour plus U0.5 W0.5"; then one rapid to A; then G70. Under
-/// the letter the rapid to C X86.5 Z15.5 comes first.
+/// Under the letter the rapid to C X86.5 Z15.5 comes first; then G73.EXAMPLE: "ten passes, pass
+/// n offset by (2·round(1.8·(10 − n)) + 0.5, round(0.5·(10 − n)) + 0.5) — the last one on the
+/// contour plus U0.5 W0.5"; then one rapid to A; then G70.
 #[test]
 fn example3_ten_passes() {
     let t = run(EXAMPLE3);

@@ -3,14 +3,15 @@
 //! (`fuzz/corpus/<target>/`, not committed).
 //!
 //! The seeds: every program of the built-in corpus (the manuals' examples and one program per
-//! feature) under its configuration and, for the structured targets, the plain case of each
+//! feature) under its configuration — for the structured targets only those whose configuration
+//! a literal input carries (not a declared reading or a parameter set) — and, for the structured targets, the plain case of each
 //! generator family and a few built from fixed-seed random knobs, so the fuzzer starts from
 //! every family.
 
 use super::decoded::{Origin, ProgramCase};
 use super::replay::{built, case_for};
 use super::{CycleInput, Target};
-use super::input::Generator;
+use super::input::{literal_bits, literal_config, Generator};
 use crate::gen::{self, KNOBS};
 use crate::registry::FAMILIES;
 
@@ -34,6 +35,9 @@ pub fn seeds(target: Target) -> Vec<(String, Vec<u8>, ProgramCase)> {
     }
     for p in crate::corpus::PROGRAMS {
         let config = (target != Target::ParseBlocks).then(|| p.config());
+        if config.is_some_and(|c| c != literal_config(literal_bits(&c))) {
+            continue; // no literal input carries its readings or parameters
+        }
         let origin = origin(target, format!("corpus program {}", p.name));
         out.extend(case_for(target, p.text.as_bytes(), config, origin, None).map(|c| (p.name.to_string(), p.text.as_bytes().to_vec(), c)));
     }

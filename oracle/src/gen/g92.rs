@@ -15,8 +15,13 @@ pub fn build(dice: &mut Dice) -> Case {
     let mut w = Writer::new(&mut dice.fork(2));
     let d = &mut dice.fork(12);
 
+    // G92.PATH step ③: a pull-out may not end beyond the start X. `room` (radius) is more than
+    // the default pull-out (No.19 tenths of a lead, a lead below 7 units); most first cycles cut
+    // at least that deep, and the start X leaves that room above the axis.
+    let room = config.params.no19_pullout.unwrap_or(10).clamp(0, 255) * 7 * u / 10;
+
     // The start point A, by G00 (mostly) or by the configuration.
-    let mut ax = d.range(4 * u, 120 * u);
+    let mut ax = d.range(4 * u, 120 * u) + 2 * room;
     let az = d.range(0, 20 * u);
     if !d.chance(15) {
         if d.chance(10) {
@@ -54,7 +59,7 @@ pub fn build(dice: &mut Dice) -> Case {
                     words.push(('G', "92".to_string()));
                 }
                 let side = if n == 0 { d.weighted(&[78, 19, 3]) } else { d.weighted(&[80, 18, 2]) }; // external, internal, on the start X
-                let depth = if n == 0 { d.range(1, 10 * u) } else { d.range(1, u) };
+                let depth = if n == 0 { d.range(1, 10 * u) + if d.chance(15) { 0 } else { room } } else { d.range(1, u) };
                 let base = if n == 0 { ax } else { end_x };
                 end_x = match side {
                     0 => base - 2 * depth,
@@ -92,7 +97,7 @@ pub fn build(dice: &mut Dice) -> Case {
                 if n == 0 && lead_where == 0 {
                     words.push(lead_text(&mut w, &lead, grid));
                 }
-                jk_words(&mut w, d, travel.max(1), dec, &mut words);
+                jk_words(&mut w, d, travel.max(1), (end_x - ax).abs() / 2, dec, &mut words);
                 l_word(&mut w, d, &mut words);
             }
             // A block without axis words: only modal values change.
@@ -152,14 +157,16 @@ pub fn build(dice: &mut Dice) -> Case {
 }
 
 /// G92 J and K: each absent, positive, 0, negative (taken as positive), past the long-axis
-/// travel, or at the edge of the J/K range.
-fn jk_words(w: &mut Writer, d: &mut Dice, travel: i64, dec: u32, words: &mut Vec<(char, String)>) {
+/// travel, or at the edge of the J/K range. A J written with a size stays within `depth`, the
+/// cycle's X infeed (radius), so that step ③ mostly has a legal start (G92.PATH).
+fn jk_words(w: &mut Writer, d: &mut Dice, travel: i64, depth: i64, dec: u32, words: &mut Vec<(char, String)>) {
     for letter in ['J', 'K'] {
+        let most = if letter == 'J' { (travel / 2).min(depth) } else { travel / 2 };
         let v = match d.weighted(&[50, 25, 8, 7, 3, 3]) {
             0 => continue,
-            1 => d.range(1, (travel / 2).max(1)),
+            1 => d.range(1, most.max(1)),
             2 => 0,
-            3 => -d.range(1, (travel / 2).max(1)),
+            3 => -d.range(1, most.max(1)),
             4 => travel + d.range(0, 2),
             _ => d.one_of(&[99_999_999, -99_999_999, 100_000_000]),
         };

@@ -142,10 +142,10 @@ pub fn build(cycle: Cycle, dice: &mut Dice) -> Case {
             d.range(0, 20)
         };
         let a = if fanuc && !d.chance(5) {
-            d.one_of(&[60, 55, 30, 29, 0, 80])
+            d.one_of(&[60, 55, 40, 30, 29, 0, 80])
         } else {
             match d.weighted(&[50, 30, 20]) {
-                0 => d.one_of(&[60, 55, 30, 29, 0, 80]),
+                0 => d.one_of(&[60, 55, 40, 30, 29, 0, 80]),
                 1 => d.range(0, 99),
                 _ => d.one_of(&[45, 1, 89, 99]),
             }
