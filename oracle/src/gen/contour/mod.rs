@@ -7,7 +7,7 @@
 //! horizontal pieces exactly on a layer, layer ends on arcs and on rounding ties), outside and
 //! inside (s = ±1), both cutting directions, allowances of every sign, Δd from one increment to
 //! more than the stock, e = 0 to large, first blocks present or absent (5132/5133), F in contour
-//! blocks, sequence numbers spelled `N050`, `N50`, `N50.0`, G50, G96–G99 and the nose-radius
+//! blocks, sequence numbers spelled `N050`, `N50`, `N50.0`, G50 (S the maximum), G97–G99 and the nose-radius
 //! codes, and the register's alarms at a controlled rate ([`defect`]: every CNT.*, ARC.*,
 //! TNRC.*, G50, TYPE2, FIRST, MONOTONE, the pass bound, nc201). Knob 0 is a plain legal program.
 

@@ -71,8 +71,9 @@ pub(super) fn write(cycle: Cycle, (defect, v): (Defect, u32), w: &mut Writer, d:
         let (gx, gz) = (w.length(d.range(0, 300 * u), dec), w.length(d.range(-50 * u, 200 * u), dec));
         w.block(&[('G', "50".into()), ('X', gx), ('Z', gz)]);
     }
+    // No G96 here: it needs an earlier G50 S (G96.SMAX) and refuses the G00 to A (G96.RAPID).
     if d.chance(10) {
-        w.line(d.one_of(&["G96 S200", "G97 S800", "G99", "G98", "G40 T0202", "M3 S500 T0101"]));
+        w.line(d.one_of(&["G50 S2500", "G97 S800", "G99", "G98", "G40 T0202", "M3 S500 T0101"]));
     }
     let comp = defect.before_cycle(w, d, dec);
     if by_config {
