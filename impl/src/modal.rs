@@ -166,7 +166,7 @@ struct Vals {
     w: Option<i64>,
     x: Option<i64>,
     z: Option<i64>,
-    /// G162 words: A (half degrees), B and J (0.001°, J in `j`), H (lead counts), I (pitch
+    /// G162 words: A (tenths of a degree), B and J (0.001°, J in `j`), H (lead counts), I (pitch
     /// change, lead counts), V (radius).
     a: Option<i64>,
     b: Option<i64>,

@@ -38,6 +38,8 @@ use cycle_impl::fixed::{
     div_round, div_round_signed, isqrt, mul_tan, mul_tan_checked, mul_wide, sqrt_round, start_angle,
     tan_half_degrees, TAN_MAX_INDEX,
 };
+#[cfg(test)]
+use cycle_impl::fixed::{tan_tenths, TAN_MAX_TENTHS};
 use cycle_impl::MAX_LENGTH;
 
 /// Whether `t` is δ·tan rounded half up for every tangent in the table's enclosure
@@ -318,6 +320,43 @@ mod tests {
             let rhs_lo = a.add(&b).mul(&one);
             let rhs_hi = a_hi.add(&b1).mul(&one);
             assert!(lhs_lo <= rhs_hi && rhs_lo <= lhs_hi, "tan({}°) inconsistent with tan({}°)", f64::from(h) / 2.0, f64::from(h - 1) / 2.0);
+        }
+    }
+
+    /// The table on the 0.1° grid (G162.A), by the same addition formula with y = 0.1°: each
+    /// tenth against the one before, chained from tan 0 = 0 through tan 45° = 1 (exact) to 89°
+    /// (tan 0.1° is pinned by landing on 1 at 45°); and every tenth against `f64::tan` for
+    /// small δ (a coarse, independent cross-check).
+    #[test]
+    fn tenths_table_satisfies_the_addition_formula() {
+        let entry_t = |t: u32| {
+            let (int, frac) = tan_tenths(t).unwrap();
+            Big::from_u128(u128::from(int)).mul(&Big::pow2(128)).add(&Big::from_u128(frac))
+        };
+        let one = Big::pow2(256);
+        let b = entry_t(1);
+        let b1 = b.add(&Big::from_u128(1));
+        let exact = |t: u32| t == 0 || t == 450;
+        for t in 1..=TAN_MAX_TENTHS {
+            let a = entry_t(t - 1);
+            let c = entry_t(t);
+            let a_hi = if exact(t - 1) { a.clone() } else { a.add(&Big::from_u128(1)) };
+            let c_hi = if exact(t) { c.clone() } else { c.add(&Big::from_u128(1)) };
+            let ab_lo = a.mul(&b);
+            let ab_hi = a_hi.mul(&b1);
+            assert!(ab_hi < one, "tan x·tan y < 1 below 90°");
+            let lhs_lo = c.mul(&one.sub(&ab_hi));
+            let lhs_hi = c_hi.mul(&one.sub(&ab_lo));
+            let rhs_lo = a.add(&b).mul(&one);
+            let rhs_hi = a_hi.add(&b1).mul(&one);
+            assert!(lhs_lo <= rhs_hi && rhs_lo <= lhs_hi, "tan({}°) inconsistent with tan({}°)", f64::from(t) / 10.0, f64::from(t - 1) / 10.0);
+        }
+        for t in 0..=TAN_MAX_TENTHS {
+            let tan = (f64::from(t) * 0.1).to_radians().tan();
+            for delta in (0..200u64).chain([10_000, 123_457]) {
+                let v = cycle_impl::fixed::mul_tan_tenths(delta, t) as f64;
+                assert!((v - delta as f64 * tan).abs() <= 0.5 + 1e-6, "t {t} δ {delta}");
+            }
         }
     }
 

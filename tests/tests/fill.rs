@@ -121,7 +121,9 @@ fn fill_gives_the_iterator_stream_on_the_corpus() {
 /// nothing (the case of a buffer that the events do not fill).
 #[test]
 fn an_alarm_follows_the_events_before_it() {
-    let program = b"G0 X40 Z5\nG92 X38 Z-20 F2\nG0 X1 #\n";
+    // (From X44: the default pull-out, J = one lead, ends at X42 — G92.PATH step ③ refuses X₃
+    // beyond the start X.)
+    let program = b"G0 X44 Z5\nG92 X38 Z-20 F2\nG0 X1 #\n";
     let mut expander = Expander::new(program, Config::default());
     let mut buffer = vec![Event::Move(Move::rapid(0, 0, Rule::PrjTrace)); 64];
     let n = expander.fill(&mut buffer).unwrap();
