@@ -85,6 +85,12 @@ fn nesting() {
     assert_eq!(t.alarm, al(AlarmCode::Nesting, b'P', Rule::SubNest, 22));
     assert_eq!(moves(&t).len(), 4);
     assert_eq!(alarm_of("M98 P1\nM30\nO1\nM98 P1\nM99\n"), al(AlarmCode::Nesting, b'P', Rule::SubNest, 4));
+    // Step 5 of an M98 block in the register's order: SUB.FIND, SUB.NEST, then the run bound.
+    let deep = "M98 P1\nM30\nO1\nM98 P2\nM99\nO2\nM98 P3\nM99\nO3\nM98 P4\nM99\nO4\n";
+    assert_eq!(alarm_of(&format!("{deep}M98 P9\nM99\n")), al(AlarmCode::BlockNotFound, b'P', Rule::SubFind, 13));
+    let cfg = Config { params: Params { max_passes: Some(5), ..Params::default() }, ..Config::default() };
+    let t = expand(&format!("{deep}M98 P90001\nM99\n"), cfg);
+    assert_eq!(t.alarm, al(AlarmCode::Nesting, b'P', Rule::SubNest, 13));
 }
 
 /// PRJ.MAXPASS: the runs, every repeat counted, against `max_passes`; the call that would
