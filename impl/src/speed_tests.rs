@@ -107,8 +107,9 @@ fn rapids_under_g96() {
     assert_eq!(moves(&t).last(), Some(&Move::rapid(10_000, 2_000, Rule::PrjModal)));
 }
 
-/// G84 under G98 taps with the rpm in force: the last S written under G97 — never a G50 S (the
-/// maximum) nor a G96 S (a surface speed); under G96 it is UNSUPPORTED on G (G84.FORMAT).
+/// G96.SPEED, G84.FORMAT: G84 under G98 taps with the rpm in force — the last S written under
+/// G97, never a G50 S (the maximum) nor a G96 S (a surface speed); under G96 it is UNSUPPORTED
+/// on G.
 #[test]
 fn g84_rpm() {
     let missing = |line| al(AlarmCode::MissingWord, b'S', Rule::G84Format, line);

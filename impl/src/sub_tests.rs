@@ -85,6 +85,12 @@ fn nesting() {
     assert_eq!(t.alarm, al(AlarmCode::Nesting, b'P', Rule::SubNest, 22));
     assert_eq!(moves(&t).len(), 4);
     assert_eq!(alarm_of("M98 P1\nM30\nO1\nM98 P1\nM99\n"), al(AlarmCode::Nesting, b'P', Rule::SubNest, 4));
+    // Step 5 of an M98 block in the register's order: SUB.FIND, SUB.NEST, then the run bound.
+    let deep = "M98 P1\nM30\nO1\nM98 P2\nM99\nO2\nM98 P3\nM99\nO3\nM98 P4\nM99\nO4\n";
+    assert_eq!(alarm_of(&format!("{deep}M98 P9\nM99\n")), al(AlarmCode::BlockNotFound, b'P', Rule::SubFind, 13));
+    let cfg = Config { params: Params { max_passes: Some(5), ..Params::default() }, ..Config::default() };
+    let t = expand(&format!("{deep}M98 P90001\nM99\n"), cfg);
+    assert_eq!(t.alarm, al(AlarmCode::Nesting, b'P', Rule::SubNest, 13));
 }
 
 /// PRJ.MAXPASS: the runs, every repeat counted, against `max_passes`; the call that would
@@ -197,6 +203,13 @@ fn contours_within_their_program() {
     // The contour in the subprogram, the G70 in the main program after the call: not found.
     let t = expand(&format!("{main}O8\n{contour}M99\n").replace("M30\n", "G70 P10 Q20\nM30\n"), Config::default());
     assert_eq!(t.alarm, al(AlarmCode::BlockNotFound, b'P', Rule::CntFind, 3));
+    // The contour in the main program before the call, the G70 after it: the main program's
+    // blocks are counted across the call (the caller's reader goes on where it stood).
+    let t = expand(&format!("G0 X50 Z5\n{contour}G0 X50 Z5\nM98 P8\nG70 P10 Q20\nM30\nO8\nG0 X60\nG0 X50\nM99\n"), Config::default());
+    assert_eq!(t.alarm, None);
+    // The contour run as ordinary blocks (4 moves), the subprogram (2), the finishing pass (3).
+    assert_eq!(moves(&t).len(), 4 + 2 + 3, "{}", t.to_gcode());
+    assert_eq!(moves(&t).iter().filter(|m| m.rule == Rule::G70Path).count(), 2);
     // Run twice: each run searches from its O block again (the same contour, found once).
     let t = expand(&format!("G0 X50 Z5\nM98 P20008\nM30\nO8\n{contour}G0 X50 Z5\nG70 P10 Q20\nM99\n"), Config::default());
     assert_eq!(t.alarm, None);
