@@ -4,8 +4,19 @@
 //! generated case draws ([`from_bits`]: one bit per reading, 0 the letter) and the per-value
 //! counts of a run ([`Counts`]).
 
+use cycle_vocab::readings::{G162Lead, G73C, G75Relief, G94K, G96Rapid, ThreadZRef};
 use cycle_vocab::Readings;
 use std::collections::BTreeMap;
+
+/// The manuals' letter throughout (`Readings::default()`, as a constant).
+pub const LETTER: Readings = Readings {
+    g94_k: G94K::EndMinusStart,
+    g73_c: G73C::Visit,
+    g75_relief: G75Relief::MinusZ,
+    g162_lead: G162Lead::Steps,
+    thread_zref: ThreadZRef::Start,
+    g96_rapid: G96Rapid::Refuse,
+};
 
 /// Readings named on the command line (`--reading NAME=VALUE`, repeatable), in order; each name
 /// at most once.
@@ -83,6 +94,9 @@ pub struct Declared {
 }
 
 impl Declared {
+    /// Nothing declared: the letter throughout.
+    pub const NONE: Declared = Declared { readings: LETTER, names: 0 };
+
     /// Reads the greeting's `"readings"` value (absent: nothing declared).
     pub fn parse(value: Option<&serde_json::Value>) -> Result<Declared, String> {
         let mut d = Declared::default();
@@ -224,6 +238,7 @@ mod tests {
 
     #[test]
     fn bits_choose_values_and_read_back() {
+        assert_eq!(LETTER, Readings::default());
         assert!(from_bits(0).is_letter());
         for b in 0..64u8 {
             assert_eq!(bits(&from_bits(b)), b);

@@ -3,6 +3,7 @@
 //! when every family is covered. Nothing is drawn ahead, so the run's memory does not grow with
 //! the number of cases. A sharded run ([`super::shard`]) draws every case and keeps its own.
 
+use super::readings_plan::Plan;
 use super::shard::Shard;
 use super::{Options, Origin};
 use crate::corpus;
@@ -51,20 +52,31 @@ struct Generator {
     count: u32,
 }
 
-fn generators(options: &Options) -> Vec<Generator> {
+/// `strategy` with each case's readings set by `plan`.
+fn planned(strategy: BoxedStrategy<Case>, plan: &Plan) -> BoxedStrategy<Case> {
+    let plan = plan.clone();
+    strategy
+        .prop_map(move |mut case| {
+            plan.apply(&mut case.config);
+            case
+        })
+        .boxed()
+}
+
+fn generators(options: &Options, plan: &Plan) -> Vec<Generator> {
     let mut g: Vec<Generator> = FAMILIES
         .iter()
         .enumerate()
         .filter(|(_, f)| options.cycles.contains(f))
-        .map(|(i, f)| Generator { family: f.name, number: i as u64 + 1, strategy: f.strategy(), count: options.cases })
+        .map(|(i, f)| Generator { family: f.name, number: i as u64 + 1, strategy: planned(f.strategy(), plan), count: options.cases })
         .collect();
     let threads: Vec<&'static registry::Family> = options.cycles.iter().copied().filter(|f| gen::operator::FAMILIES.contains(&f.name)).collect();
     if options.operator && !threads.is_empty() {
         let (number, count) = (FAMILIES.len() as u64 + 1, options.cases.div_ceil(4));
-        g.push(Generator { family: "operator", number, strategy: gen::operator::strategy(threads), count });
+        g.push(Generator { family: "operator", number, strategy: planned(gen::operator::strategy(threads), plan), count });
     }
     if options.all_cycles() {
-        g.push(Generator { family: "garbage", number: 0, strategy: gen::garbage::strategy(), count: options.cases.div_ceil(5) });
+        g.push(Generator { family: "garbage", number: 0, strategy: planned(gen::garbage::strategy(), plan), count: options.cases.div_ceil(5) });
     }
     g
 }
@@ -82,6 +94,7 @@ fn covered(options: &Options, program: &[u8], config: &Config) -> bool {
 /// The cases of a run, in order, drawn as they are asked for.
 pub struct Cases<'o> {
     options: &'o Options,
+    plan: Plan,
     corpus: std::iter::Enumerate<std::slice::Iter<'static, corpus::Program>>,
     generators: std::vec::IntoIter<Generator>,
     /// The generator being drawn from, its runner and the next index.
@@ -94,16 +107,19 @@ pub struct Cases<'o> {
 }
 
 impl<'o> Cases<'o> {
-    pub fn new(options: &'o Options) -> Cases<'o> {
-        let generators = generators(options);
+    /// The cases of `options`, their readings set by `plan` (the corpus programs' from the
+    /// letter).
+    pub fn new(options: &'o Options, plan: &Plan) -> Cases<'o> {
+        let generators = generators(options, plan);
         let total = corpus::PROGRAMS.len() + generators.iter().map(|g| g.count as usize).sum::<usize>();
-        Cases { options, corpus: corpus::PROGRAMS.iter().enumerate(), generators: generators.into_iter(), current: None, runs: Vec::new(), drawn: 0, total }
+        Cases { options, plan: plan.clone(), corpus: corpus::PROGRAMS.iter().enumerate(), generators: generators.into_iter(), current: None, runs: Vec::new(), drawn: 0, total }
     }
 
     fn next_corpus(&mut self) -> Option<Pending> {
         for (i, p) in self.corpus.by_ref() {
             self.drawn += 1;
-            let config = p.config();
+            let mut config = p.config();
+            self.plan.apply(&mut config);
             if Shard::includes(self.options.shard, i) && covered(self.options, p.text.as_bytes(), &config) {
                 let (name, origin) = (p.name.to_string(), Origin::Corpus { path: p.path });
                 return Some(Pending { name, origin, program: p.text.as_bytes().to_vec(), config, tree: None });
@@ -199,7 +215,7 @@ mod tests {
     }
 
     fn drain(o: &Options) -> (Vec<Pending>, Vec<FamilyRun>) {
-        let mut cases = Cases::new(o);
+        let mut cases = Cases::new(o, &Plan::drawn(o.readings.clone()));
         let list: Vec<Pending> = cases.by_ref().collect();
         assert_eq!(cases.drawn, cases.total);
         (list, cases.runs)
