@@ -274,4 +274,50 @@ mod tests {
         assert_eq!(names, expected);
         assert!(runs.iter().all(|r| r.kept == r.drawn), "{runs:?}");
     }
+
+    /// In process, the generated cases draw every value of every reading (the corpus programs
+    /// run at the letter, with the pins); a candidate run's cases all carry its readings, those
+    /// told ahead too.
+    #[test]
+    fn campaigns_draw_every_reading_and_candidate_runs_fix_theirs() {
+        let o = Options { cases: 8, ..Options::default() };
+        let mut counts = crate::readings::Counts::default();
+        let (cases, _) = drain(&o);
+        for p in &cases {
+            match p.origin {
+                Origin::Corpus { .. } => assert!(p.config.readings.is_letter(), "{}", p.name),
+                Origin::Generated { .. } => counts.add(&p.config.readings),
+            }
+        }
+        for name in cycle_vocab::Readings::NAMES {
+            for value in cycle_vocab::Readings::values(name).unwrap() {
+                assert!(counts.get(name, value) > 0, "no case with {name}={value}: {counts:?}");
+            }
+        }
+        let pins = crate::readings::Pins::parse(&["g75.relief=against-step"]).unwrap();
+        let pinned = Options { readings: pins.clone(), cycles: Options::parse_cycles("g75").unwrap(), ..o.clone() };
+        let mut cases = Cases::new(&pinned, &Plan::drawn(pins.clone()));
+        assert!(cases.by_ref().all(|p| p.config.readings.get("g75.relief") == Some("against-step")));
+        let declared = crate::readings::Declared::parse(Some(&serde_json::json!({"g94.k": "start-minus-end"}))).unwrap();
+        let plan = Plan::declared(Some(declared), pins).unwrap();
+        let Plan::Declared { readings, .. } = plan else { panic!() };
+        let seen = std::sync::Mutex::new(Vec::new());
+        struct Told<'a>(&'a std::sync::Mutex<Vec<cycle_vocab::Readings>>);
+        impl Engine for Told<'_> {
+            fn name(&self) -> &str {
+                "told"
+            }
+            fn expand(&self, program: &[u8], config: &Config) -> cycle_vocab::text::Trace {
+                SpecEngine.expand(program, config)
+            }
+            fn prefetch(&self, _: &[u8], config: &Config) {
+                self.0.lock().unwrap().push(config.readings);
+            }
+        }
+        let told = Told(&seen);
+        let handed: Vec<Pending> = Ahead::new(Cases::new(&o, &plan), &told, 4).collect();
+        assert!(handed.len() > 100 && handed.iter().all(|p| p.config.readings == readings));
+        let seen = seen.into_inner().unwrap();
+        assert!(seen.len() == handed.len() && seen.iter().all(|r| *r == readings));
+    }
 }
