@@ -45,6 +45,9 @@ struct State {
     greet: bool,
     /// The readings the first greeted child declared: every later child must declare the same.
     declared: Option<Declared>,
+    /// The failure to start or greet the child [`CandidateEngine::declared`] started: the first
+    /// case's, as if that case had started the child.
+    pending: Option<Failure>,
     queue: VecDeque<Queued>,
     /// When the running child last answered (or started).
     last_answer: Instant,
@@ -61,6 +64,7 @@ impl CandidateEngine {
             speaks: Speaks::LEGACY,
             greet: true,
             declared: None,
+            pending: None,
             queue: VecDeque::new(),
             last_answer: Instant::now(),
             next_id: 0,
@@ -128,14 +132,13 @@ impl CandidateEngine {
     }
 
     /// The readings the candidate declares in its greeting, starting (and greeting) a child if
-    /// none runs. A legacy candidate declares none. A child that cannot be started or greeted
-    /// is left for the first case to start again, so the failure is that case's as before.
+    /// none runs. A legacy candidate declares none. A child that cannot be started or greeted:
+    /// the failure is the next case's, as if that case had started it.
     pub fn declared(&self) -> Result<Declared, Failure> {
         let mut s = self.lock();
         if s.running.is_none() {
             if let Err(f) = self.start(&mut s) {
-                // The first case greets again, and fails (or not) on its own.
-                s.greet = true;
+                s.pending = Some(f.clone());
                 return Err(f);
             }
         }
@@ -194,6 +197,10 @@ impl CandidateEngine {
 
     /// The answer to the first queued case, which leaves the queue.
     fn ask_first(&self, s: &mut State, alone: bool) -> Result<Trace, Failure> {
+        if let Some(f) = s.pending.take() {
+            s.queue.pop_front();
+            return Err(f);
+        }
         if s.running.is_none() {
             if let Err(f) = self.start(s) {
                 s.queue.pop_front();
