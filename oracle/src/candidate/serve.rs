@@ -137,4 +137,17 @@ mod tests {
         assert_eq!(unhex("473"), None);
         assert_eq!(unhex("zz"), None);
     }
+
+    /// `serve` takes every reading from the request's configuration.
+    #[test]
+    fn takes_the_readings_from_each_request() {
+        let mut c = Config::default();
+        c.readings.set("g94.k", "start-minus-end").unwrap();
+        c.readings.set("thread.zref", "groove").unwrap();
+        let line = request(4, b"G0 X1\n", &c);
+        let req: Incoming = serde_json::from_str(&line).unwrap();
+        assert_eq!(req.config.map(|r| r.readings), Some(c.readings));
+        let letter: Incoming = serde_json::from_str(&request(5, b"G0 X1\n", &Config::default())).unwrap();
+        assert!(letter.config.unwrap().readings.is_letter());
+    }
 }
