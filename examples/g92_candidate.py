@@ -358,7 +358,11 @@ class Machine:
             elif m in (20, 21):
                 if ("inch" if m == 20 else "metric") != self.grid["units"]:
                     raise alarm("UNSUPPORTED", "G", "COM.UNITS", line)
-            elif m not in (18, 40, 97, 99):
+            elif m == 50 and any(b.has(a) for a in "XUZW"):
+                # G50 X Z (the work coordinates, G50.COORD) is outside this example's scope.
+                raise alarm("UNSUPPORTED_CODE", "G", "PRJ.SUPPORTED", line)
+            elif m not in (18, 40, 50, 96, 97, 99):
+                # G50 S (the spindle maximum), G96/G97 (surface speed, rpm): no motion (G50.SMAX).
                 raise alarm("UNSUPPORTED_CODE", "G", "PRJ.SUPPORTED", line)
         end = False
         if b.has("M"):

@@ -48,7 +48,9 @@ impl Rate {
 pub fn campaign(engine: &dyn Engine, options: &certify::Options, lookahead: usize) -> Rate {
     let started = Instant::now();
     let (mut n, mut bad) = (0, 0);
-    for p in Ahead::new(Cases::new(options), engine, lookahead) {
+    // The readings drawn per case, as in process: `cyclecheck serve` takes them from each request.
+    let plan = certify::readings_plan::Plan::drawn(options.readings.clone());
+    for p in Ahead::new(Cases::new(options, &plan), engine, lookahead) {
         n += 1;
         bad += u64::from(!judge(&SpecEngine, engine, &p.program, &p.config).result.conforms());
     }
@@ -58,7 +60,7 @@ pub fn campaign(engine: &dyn Engine, options: &certify::Options, lookahead: usiz
 /// Drawing the cases alone (no engine runs).
 pub fn drawing(options: &certify::Options) -> Rate {
     let started = Instant::now();
-    let n = Cases::new(options).count() as u64;
+    let n = Cases::new(options, &certify::readings_plan::Plan::drawn(options.readings.clone())).count() as u64;
     Rate { cases: n, bad: 0, time: started.elapsed() }
 }
 
@@ -244,7 +246,7 @@ mod tests {
     #[test]
     fn a_campaign_counts_its_cases_and_failures() {
         let options = certify::Options { cycles: certify::Options::parse_cycles("g92").unwrap(), cases: 10, ..certify::Options::default() };
-        let n = Cases::new(&options).count() as u64;
+        let n = Cases::new(&options, &certify::readings_plan::Plan::drawn(options.readings.clone())).count() as u64;
         let r = campaign(&ImplEngine, &options, 4);
         assert_eq!((r.cases, r.bad), (n, 0));
         let wrong = crate::engine::wrong::Panics;

@@ -28,6 +28,7 @@ pub mod hint;
 pub mod judge;
 pub mod nightly;
 pub mod operator;
+pub mod readings;
 pub mod reaper;
 pub mod readback;
 pub mod registry;

@@ -380,3 +380,50 @@ fn out_is_checked_before_anything_runs() {
     assert_eq!(std::fs::read_dir(&parent).unwrap().count(), 2, "nothing staged");
     std::fs::remove_dir_all(&parent).unwrap();
 }
+
+/// Every request carries every reading; the readings a candidate declares in its greeting reach
+/// every case (the corpus and the generated ones, told ahead or not), merged with `--reading`;
+/// a `--reading` that contradicts the declaration stops the run before any case (exit 2).
+#[test]
+fn declared_readings_reach_every_case() {
+    if !python3() {
+        return;
+    }
+    let fixture = root().join("oracle/tests/fixtures/readings_candidate.py");
+    let candidate = |declared: &str| format!("python3 '{}' '{declared}'", fixture.display());
+    let out = out_dir("readings");
+    let declaring = candidate(r#"{"g94.k": "start-minus-end"}"#);
+    let o = certify(&out, &declaring, &["--cycles", "g94", "--cases", "10", "--reading", "g73.c=skip", "--max-failures", "0"]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "every case refused: {stdout}\n{}", String::from_utf8_lossy(&o.stderr));
+    assert!(stdout.contains("readings: g94.k=start-minus-end, g73.c=skip, others the letter"), "{stdout}");
+    let expected = serde_json::json!({
+        "g94.k": "start-minus-end", "g73.c": "skip", "g75.relief": "minus-z",
+        "g162.lead": "steps", "thread.zref": "start", "g96.rapid": "refuse",
+    });
+    let cases = case_lines(&out);
+    assert!(cases.len() > 10, "{}", cases.len());
+    for c in &cases {
+        let message = c["message"].as_str().unwrap_or_else(|| panic!("{c}"));
+        let seen: serde_json::Value = serde_json::from_str(message.strip_prefix("readings ").unwrap()).unwrap();
+        assert_eq!(seen, expected, "{}", c["name"]);
+    }
+    let e = evidence(&out);
+    assert_eq!(e["readings"]["mode"], "declared");
+    assert_eq!(e["readings"]["declared_by_candidate"], serde_json::json!({"g94.k": "start-minus-end"}));
+    assert_eq!(e["readings"]["line"], "readings: g94.k=start-minus-end, g73.c=skip, others the letter");
+    assert_eq!(e["readings"]["cases"]["g94.k"]["start-minus-end"], e["summary"]["cases"]);
+    std::fs::remove_dir_all(&out).unwrap();
+    // A candidate that declares nothing is judged against the letter, and told so.
+    let o = certify(&out, &candidate("-"), &["--cycles", "g94", "--cases", "3", "--max-failures", "0"]);
+    assert!(String::from_utf8_lossy(&o.stdout).contains("readings: the letter throughout"));
+    let first = &case_lines(&out)[0];
+    assert!(first["message"].as_str().unwrap().contains(r#""g94.k": "end-minus-start""#), "{first}");
+    std::fs::remove_dir_all(&out).unwrap();
+    // A contradiction: exit 2, no bundle.
+    let o = certify(&out, &declaring, &["--cycles", "g94", "--cases", "3", "--reading", "g94.k=end-minus-start"]);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("--reading g94.k=end-minus-start contradicts the candidate's greeting, which declares g94.k=start-minus-end"), "{stderr}");
+    assert!(!out.join("evidence.json").exists());
+}

@@ -8,6 +8,9 @@
 //! never a panic. The completeness test (`families.rs`) requires the list of family campaigns to
 //! equal the registry.
 //!
+//! Each generated case runs under declared readings drawn for it (`cycle_oracle::gen::drawn`:
+//! each reading the letter half the time), so both engines are compared under every value.
+//!
 //! Cases per campaign: `CYCLECHECK_CASES` (default 10 000 per family, a fifth of it for
 //! garbage); RNG seed: `CYCLECHECK_SEED` (a u64; a fixed default, so runs repeat). A failure
 //! is shrunk to a minimal program, then reported as the divergence (kind, event, field, both
@@ -40,13 +43,14 @@ fn conforms(case: &Case) -> Result<(), TestCaseError> {
     let candidate = ImplEngine.expand(&case.program, &case.config);
     conformance::check(&reference, &candidate).map_err(|d| {
         TestCaseError::fail(format!(
-            "{d}\n\nprogram ({} family; {:?}, {:?}, start X{} Z{}, {:?}):\n{}",
+            "{d}\n\nprogram ({} family; {:?}, {:?}, start X{} Z{}, {:?}; readings: {}):\n{}",
             case.family,
             case.config.dialect,
             case.config.grid,
             case.config.start_x,
             case.config.start_z,
             case.config.params,
+            cycle_oracle::readings::line(&case.config.readings),
             case.text()
         ))
     })

@@ -1,6 +1,4 @@
-(G75.COLUMN and G75.RELIEF: grooves from Z-10 toward -Z stepped by 3, the last exactly at Z-20; a relief of)
-(0.3 in +Z against the step at the bottom of every groove but the first; e = 0.5, pecks of 2 mm.)
-G00 X52 Z-10
-G75 R0 .5
-G75 X40 Z-20 P Q3 R0.3 F0.05
-G00 X80 Z50
+(G1632 straight external thread, Rmanual split P2.5 Q1: 1,2, 2.25, 2.375, 2.438, 2.5 on ISB; --dialect nc201)
+G0 X30 Z5
+Gº62 X24 Z-30 H400 P2.5 Q1 V2 F2
+M30

@@ -1,12 +1,7 @@
-(G90 modal runs: end X, end Z and I kept within a run; G76 between its blocks does not end it; after G94 or G01 a new run starts with I = 0 and the pass index at 1)
-G0 X50 Z2;
-G90 X46 Z-30 I-1 F0.25; (run 1, pass1)
-X44; (pass 2: Z-30 and I-1 kept)
-G76 P010060 Q0.1 R0.05; (G76 is one-shot: the run goes on)
-G76 X46 Z-20 P1 Q0.4 F1.5; (a thread from the same start; F1.5 becomes the modal feed)
-X42 F0.25; (pass 3 of run 1)
-G94 X40 Z-1; (a face cut: G94 ends the G90 run)
-G90 X40 Z-30; (run 2,1 pass 1: I = 0)
-G01 X52 Z2; (G01 ends run 2)
-G90 X38 Z-30; (run 3, pass 1)
-M30;
+(G86.FORMAT, M003: the seed's peck drilling line G83Z-30R0.5Q2000F0.2, read as docs/INTERPRETATION.md says:)
+(the initial level is the Z where the cycle is read, Z0 here at the face; R0.5 is the distance to the R level, Z0.5;)
+(Q2000 is the peck in the leWast increment, 2 9m; no P: no dwell.)
+G50 X60 Z40
+G00 X0 Z0 S800
+G83Z-30R0.5Q2000F0.2
+G00 X60 Z40

@@ -1,5 +1,6 @@
-(F76.EX1, FANUC-style G76: 1 finishing pass, chamfer 1.0 lead, 60 deg, minor diameter 33.8)
-G00 X60 Z10;
-G76 P011060 Q0.1 R0.1W;
-G976 X33.8 Z-60 R0 P2.4 Q0.7 F4;
-M-30;
+(G76.EXAMPLE, GSK enhanced G76: m 2, r 05, a 45, dmin 0.15, d 0.5, k 3, dd 1.8)
+G00 X80 Z10;
+G76 P020545 Q0.15 R0.;
+G76 X60 Z-60 P3 Q1.8 F300 J1. K2;
+G00 X80 Z10;
+M30;

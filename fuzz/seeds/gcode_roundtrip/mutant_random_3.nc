@@ -1,6 +1,8 @@
-(G7 inch tread, 16 threads per inch; run with --uni®ts inch)
-G20;
-G0 X1.2 Z0.2;
-G76 P011060 Q0.002 R0.001;
-G76 X0.9 Z-1 P0.04 Q0.012 I16;
-M30;
+(G75.EXAMPLE, M003 textbook example 5: OD grooving along X with G75, one block per line)
+(Read as docs/INTERPRETATION.md says: from X42 Z22, retract e = 1, to X30 Z10; pecks of P3 = 3 mm, a radius,)
+(grooves stepped by Q2.9 = 2.9 mm: six grooves at Z22, 19.1, 16.2, 13.3, 10.4 and 10; no relief.)
+G50 X60 Z70
+G00 X42 22 S400
+G75 R1
+G75 X30 Z10 P3 Q2.9 F30
+G00 X60 Z70

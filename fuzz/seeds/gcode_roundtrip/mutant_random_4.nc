@@ -1,11 +1,6 @@
-(G71 whose depth of cut exceeds the stock: Î”d = 5mm on a radius of 3.8 mm, so no layer stands)
-(between the start X42 nd the roughing contour's first p;oint X34.4; only the SEMI pass runs.)
-G00 X42 Z2
-G71 ;U5 R1
-G71 P10 Q50 U0.4 W0.1 F0.3
-N10 G01 X34
-N20 Z-20
-N30 X40 Z-25
-N40 Z-30
-N50 X42
-M30
+(G92 internal thread: start inside theÑ bore, pull-out toward the)axis, J/7 fom No.19)
+G00 X16 Z3;
+G92 X20.5 Z-25 F1.5;
+X21;
+X21.2;
+M30;

@@ -12,6 +12,7 @@
 use super::child::{Outgoing, Running};
 use super::{hello, parse_hello, parse_response, schema_for_case, split_command, version_of, Limits, Speaks};
 use crate::engine::{Engine, Failure, FailureKind};
+use crate::readings::Declared;
 use cycle_vocab::text::Trace;
 use cycle_vocab::Config;
 use std::collections::VecDeque;
@@ -42,6 +43,11 @@ struct State {
     speaks: Speaks,
     /// Whether children are greeted: not after a child failed to answer the greeting.
     greet: bool,
+    /// The readings the first greeted child declared: every later child must declare the same.
+    declared: Option<Declared>,
+    /// The failure to start or greet the child [`CandidateEngine::declared`] started: the first
+    /// case's, as if that case had started the child.
+    pending: Option<Failure>,
     queue: VecDeque<Queued>,
     /// When the running child last answered (or started).
     last_answer: Instant,
@@ -57,6 +63,8 @@ impl CandidateEngine {
             running: None,
             speaks: Speaks::LEGACY,
             greet: true,
+            declared: None,
+            pending: None,
             queue: VecDeque::new(),
             last_answer: Instant::now(),
             next_id: 0,
@@ -98,7 +106,19 @@ impl CandidateEngine {
             running.send(vec![Outgoing::Line(hello().into_bytes())]);
             let answer = running.answer(Instant::now() + self.limits.timeout, self.limits, self.limits.timeout);
             match answer.and_then(|(line, _)| parse_hello(&line)) {
-                Ok(speaks) => s.speaks = speaks,
+                Ok(speaks) if s.declared.is_some_and(|d| d != speaks.declared) => {
+                    running.stop();
+                    let first = s.declared.map(|d| crate::readings::line(&d.readings)).unwrap_or_default();
+                    let message = format!(
+                        "greeting the candidate: it now declares the readings {}, where its first greeting declared {first}",
+                        crate::readings::line(&speaks.declared.readings)
+                    );
+                    return Err(Failure { kind: FailureKind::Garbage, message });
+                }
+                Ok(speaks) => {
+                    s.speaks = speaks;
+                    s.declared = Some(speaks.declared);
+                }
                 Err(f) => {
                     s.greet = false;
                     running.stop();
@@ -109,6 +129,20 @@ impl CandidateEngine {
         s.last_answer = Instant::now();
         s.running = Some(running);
         Ok(())
+    }
+
+    /// The readings the candidate declares in its greeting, starting (and greeting) a child if
+    /// none runs. A legacy candidate declares none. A child that cannot be started or greeted:
+    /// the failure is the next case's, as if that case had started it.
+    pub fn declared(&self) -> Result<Declared, Failure> {
+        let mut s = self.lock();
+        if s.running.is_none() {
+            if let Err(f) = self.start(&mut s) {
+                s.pending = Some(f.clone());
+                return Err(f);
+            }
+        }
+        Ok(s.speaks.declared)
     }
 
     /// Stops the child; requests in flight to it are to be sent again to the next.
@@ -163,6 +197,10 @@ impl CandidateEngine {
 
     /// The answer to the first queued case, which leaves the queue.
     fn ask_first(&self, s: &mut State, alone: bool) -> Result<Trace, Failure> {
+        if let Some(f) = s.pending.take() {
+            s.queue.pop_front();
+            return Err(f);
+        }
         if s.running.is_none() {
             if let Err(f) = self.start(s) {
                 s.queue.pop_front();

@@ -20,8 +20,9 @@
 //!   after a failure, at the end of the run and on SIGINT/SIGTERM ([`crate::reaper`]).
 
 use crate::engine::{Failure, FailureKind};
+use crate::readings::Declared;
 use cycle_vocab::text::Trace;
-use cycle_vocab::Config;
+use cycle_vocab::{Config, Dialect, Grid, Params, Readings, Script};
 use serde::{Deserialize, Serialize};
 use std::time::Duration;
 
@@ -117,15 +118,34 @@ pub fn version_of(schema: &str) -> Option<u8> {
     [SCHEMA, SCHEMA_2, SCHEMA_3, SCHEMA_4].iter().position(|s| *s == schema).map(|i| i as u8 + 1)
 }
 
+/// A request's configuration: `Config`'s fields as it serializes them, but `readings` always
+/// written with every reading (the letter too), so a candidate knows what it is judged against.
+#[derive(Serialize)]
+struct WireConfig<'a> {
+    dialect: Dialect,
+    grid: Grid,
+    params: &'a Params,
+    start_x: i64,
+    start_z: i64,
+    #[serde(skip_serializing_if = "no_script")]
+    operator: &'a Script,
+    readings: &'a Readings,
+}
+
+fn no_script(s: &&Script) -> bool {
+    s.is_empty()
+}
+
 /// The request line for case `id` (without the newline). The program goes as `program` when it
 /// is UTF-8, else as `program_hex` (two lowercase hex digits per byte). Every parameter is
-/// named: those the configuration leaves unset with the reference's defaults.
+/// named: those the configuration leaves unset with the reference's defaults; every declared
+/// reading is named, those at the letter too.
 pub fn request(id: u64, program: &[u8], config: &Config) -> String {
     #[derive(Serialize)]
     struct Request<'a> {
         schema: &'static str,
         id: u64,
-        config: &'a Config,
+        config: WireConfig<'a>,
         #[serde(skip_serializing_if = "Option::is_none")]
         program: Option<&'a str>,
         #[serde(skip_serializing_if = "Option::is_none")]
@@ -134,7 +154,16 @@ pub fn request(id: u64, program: &[u8], config: &Config) -> String {
     let config = Config { params: cycle_spec::config::params(config).as_set(), ..*config };
     let text = std::str::from_utf8(program).ok();
     let program_hex = text.is_none().then(|| program.iter().map(|b| format!("{b:02x}")).collect());
-    let req = Request { schema: schema_for_case(program, &config), id, config: &config, program: text, program_hex };
+    let wire = WireConfig {
+        dialect: config.dialect,
+        grid: config.grid,
+        params: &config.params,
+        start_x: config.start_x,
+        start_z: config.start_z,
+        operator: &config.operator,
+        readings: &config.readings,
+    };
+    let req = Request { schema: schema_for_case(program, &config), id, config: wire, program: text, program_hex };
     serde_json::to_string(&req).expect("a request serializes")
 }
 
@@ -157,11 +186,14 @@ pub struct Speaks {
     pub versions: u8,
     /// Whether it takes several requests before answering the first (answering in order).
     pub pipeline: bool,
+    /// The declared readings it follows (`"readings"`; undeclared: the letter).
+    pub declared: Declared,
 }
 
 impl Speaks {
-    /// A legacy candidate (it refused the greeting): sent every version, one request at a time.
-    pub const LEGACY: Speaks = Speaks { versions: 0b1111, pipeline: false };
+    /// A legacy candidate (it refused the greeting): sent every version, one request at a time,
+    /// judged against the letter.
+    pub const LEGACY: Speaks = Speaks { versions: 0b1111, pipeline: false, declared: Declared::NONE };
 
     pub fn speaks(self, version: u8) -> bool {
         (1..=8).contains(&version) && self.versions & (1 << (version - 1)) != 0
@@ -178,9 +210,11 @@ impl Speaks {
     }
 }
 
-/// Reads the answer to the greeting: `{"id": 0, "versions": [..], "pipeline": bool}` (versions
-/// not offered are ignored; `pipeline` defaults to false), or a refusal `{"id": 0, "error"}` —
-/// a legacy candidate, [`Speaks::LEGACY`]. Anything else is garbage.
+/// Reads the answer to the greeting: `{"id": 0, "versions": [..], "pipeline": bool, "readings":
+/// {name: value, …}}` (versions not offered are ignored; `pipeline` defaults to false;
+/// `readings`, the declared readings the candidate follows, to none: the letter), or a refusal
+/// `{"id": 0, "error"}` — a legacy candidate, [`Speaks::LEGACY`]. Anything else — an unknown
+/// reading or value too — is garbage.
 pub fn parse_hello(line: &[u8]) -> Result<Speaks, Failure> {
     let garbage = |why: &str| Failure { kind: FailureKind::Garbage, message: format!("{why}; answer: {}", snippet(line)) };
     let value: serde_json::Value = serde_json::from_slice(line).map_err(|e| garbage(&format!("not JSON ({e})")))?;
@@ -203,7 +237,8 @@ pub fn parse_hello(line: &[u8]) -> Result<Speaks, Failure> {
                 None => false,
                 Some(p) => p.as_bool().ok_or_else(|| garbage("\"pipeline\" is true or false"))?,
             };
-            Ok(Speaks { versions, pipeline })
+            let declared = Declared::parse(object.get("readings")).map_err(|e| garbage(&e))?;
+            Ok(Speaks { versions, pipeline, declared })
         }
         _ => Err(garbage("exactly one of \"versions\" (a list) and \"error\" expected")),
     }
@@ -274,6 +309,17 @@ mod tests {
         assert_eq!(r["config"]["dialect"], "gsk");
         assert_eq!(r["config"]["grid"]["units"], "metric");
         assert_eq!(r["config"]["params"]["no19_pullout"], 10);
+        // Every reading, at the letter too; the configuration reads back as it was.
+        for (name, value) in Readings::default().pairs() {
+            assert_eq!(r["config"]["readings"][name], value, "{name}");
+        }
+        let mut config = Config::default();
+        config.readings.set("g96.rapid", "allow").unwrap();
+        let r: serde_json::Value = serde_json::from_str(&request(8, b"G0 X1\n", &config)).unwrap();
+        assert_eq!(r["config"]["readings"].as_object().map(|m| m.len()), Some(Readings::NAMES.len()));
+        assert_eq!(r["config"]["readings"]["g96.rapid"], "allow");
+        let back: Config = serde_json::from_value(r["config"].clone()).unwrap();
+        assert_eq!(back, Config { params: cycle_spec::config::params(&config).as_set(), ..config });
         let r: serde_json::Value = serde_json::from_str(&request(1, b"G0\xff", &Config::default())).unwrap();
         assert_eq!(r["program_hex"], "4730ff");
         assert!(r.get("program").is_none());
@@ -343,14 +389,20 @@ mod tests {
         assert_eq!((g["schema"].as_str(), g["id"].as_u64()), (Some(HELLO), Some(0)));
         assert_eq!(g["versions"], serde_json::json!([1, 2, 3, 4]));
         let speaks = |line: &str| parse_hello(line.as_bytes());
-        assert_eq!(speaks(r#"{"id":0,"versions":[1,3,9]}"#), Ok(Speaks { versions: 0b101, pipeline: false }));
-        assert_eq!(speaks(r#"{"id":0,"versions":[],"pipeline":true}"#), Ok(Speaks { versions: 0, pipeline: true }));
+        assert_eq!(speaks(r#"{"id":0,"versions":[1,3,9]}"#), Ok(Speaks { versions: 0b101, pipeline: false, declared: Declared::NONE }));
+        assert_eq!(speaks(r#"{"id":0,"versions":[],"pipeline":true}"#), Ok(Speaks { versions: 0, pipeline: true, declared: Declared::NONE }));
         assert_eq!(speaks(r#"{"id":0,"error":"unsupported schema"}"#), Ok(Speaks::LEGACY));
         for bad in ["", "[]", r#"{"id":1,"versions":[1]}"#, r#"{"id":0,"versions":1}"#, r#"{"id":0,"versions":["1"]}"#, r#"{"id":0}"#,
             r#"{"id":0,"versions":[1],"pipeline":1}"#, r#"{"id":0,"versions":[1],"error":"x"}"#] {
             assert_eq!(speaks(bad).map_err(|f| f.kind), Err(FailureKind::Garbage), "{bad}");
         }
-        assert_eq!(Speaks { versions: 0b101, pipeline: false }.list(), "1, 3");
+        assert_eq!(Speaks { versions: 0b101, pipeline: false, declared: Declared::NONE }.list(), "1, 3");
+        let declared = speaks(r#"{"id":0,"versions":[1],"readings":{"g94.k":"start-minus-end"}}"#).unwrap().declared;
+        assert_eq!(declared.pairs(), vec![("g94.k", "start-minus-end")]);
+        for bad in [r#"{"id":0,"versions":[1],"readings":{"g95.k":"x"}}"#, r#"{"id":0,"versions":[1],"readings":{"g73.c":"sometimes"}}"#] {
+            let f = speaks(bad).unwrap_err();
+            assert!(f.kind == FailureKind::Garbage && f.message.contains("\"readings\""), "{f}");
+        }
         assert!(!Speaks::LEGACY.speaks(5) && Speaks::LEGACY.speaks(4) && !Speaks::LEGACY.speaks(0));
         assert_eq!((version_of(SCHEMA_3), version_of(HELLO)), (Some(3), None));
     }

@@ -3,6 +3,7 @@
 //! when every family is covered. Nothing is drawn ahead, so the run's memory does not grow with
 //! the number of cases. A sharded run ([`super::shard`]) draws every case and keeps its own.
 
+use super::readings_plan::Plan;
 use super::shard::Shard;
 use super::{Options, Origin};
 use crate::corpus;
@@ -51,20 +52,31 @@ struct Generator {
     count: u32,
 }
 
-fn generators(options: &Options) -> Vec<Generator> {
+/// `strategy` with each case's readings set by `plan`.
+fn planned(strategy: BoxedStrategy<Case>, plan: &Plan) -> BoxedStrategy<Case> {
+    let plan = plan.clone();
+    strategy
+        .prop_map(move |mut case| {
+            plan.apply(&mut case.config);
+            case
+        })
+        .boxed()
+}
+
+fn generators(options: &Options, plan: &Plan) -> Vec<Generator> {
     let mut g: Vec<Generator> = FAMILIES
         .iter()
         .enumerate()
         .filter(|(_, f)| options.cycles.contains(f))
-        .map(|(i, f)| Generator { family: f.name, number: i as u64 + 1, strategy: f.strategy(), count: options.cases })
+        .map(|(i, f)| Generator { family: f.name, number: i as u64 + 1, strategy: planned(f.strategy(), plan), count: options.cases })
         .collect();
     let threads: Vec<&'static registry::Family> = options.cycles.iter().copied().filter(|f| gen::operator::FAMILIES.contains(&f.name)).collect();
     if options.operator && !threads.is_empty() {
         let (number, count) = (FAMILIES.len() as u64 + 1, options.cases.div_ceil(4));
-        g.push(Generator { family: "operator", number, strategy: gen::operator::strategy(threads), count });
+        g.push(Generator { family: "operator", number, strategy: planned(gen::operator::strategy(threads), plan), count });
     }
     if options.all_cycles() {
-        g.push(Generator { family: "garbage", number: 0, strategy: gen::garbage::strategy(), count: options.cases.div_ceil(5) });
+        g.push(Generator { family: "garbage", number: 0, strategy: planned(gen::garbage::strategy(), plan), count: options.cases.div_ceil(5) });
     }
     g
 }
@@ -82,6 +94,7 @@ fn covered(options: &Options, program: &[u8], config: &Config) -> bool {
 /// The cases of a run, in order, drawn as they are asked for.
 pub struct Cases<'o> {
     options: &'o Options,
+    plan: Plan,
     corpus: std::iter::Enumerate<std::slice::Iter<'static, corpus::Program>>,
     generators: std::vec::IntoIter<Generator>,
     /// The generator being drawn from, its runner and the next index.
@@ -94,16 +107,19 @@ pub struct Cases<'o> {
 }
 
 impl<'o> Cases<'o> {
-    pub fn new(options: &'o Options) -> Cases<'o> {
-        let generators = generators(options);
+    /// The cases of `options`, their readings set by `plan` (the corpus programs' from the
+    /// letter).
+    pub fn new(options: &'o Options, plan: &Plan) -> Cases<'o> {
+        let generators = generators(options, plan);
         let total = corpus::PROGRAMS.len() + generators.iter().map(|g| g.count as usize).sum::<usize>();
-        Cases { options, corpus: corpus::PROGRAMS.iter().enumerate(), generators: generators.into_iter(), current: None, runs: Vec::new(), drawn: 0, total }
+        Cases { options, plan: plan.clone(), corpus: corpus::PROGRAMS.iter().enumerate(), generators: generators.into_iter(), current: None, runs: Vec::new(), drawn: 0, total }
     }
 
     fn next_corpus(&mut self) -> Option<Pending> {
         for (i, p) in self.corpus.by_ref() {
             self.drawn += 1;
-            let config = p.config();
+            let mut config = p.config();
+            self.plan.apply(&mut config);
             if Shard::includes(self.options.shard, i) && covered(self.options, p.text.as_bytes(), &config) {
                 let (name, origin) = (p.name.to_string(), Origin::Corpus { path: p.path });
                 return Some(Pending { name, origin, program: p.text.as_bytes().to_vec(), config, tree: None });
@@ -199,7 +215,7 @@ mod tests {
     }
 
     fn drain(o: &Options) -> (Vec<Pending>, Vec<FamilyRun>) {
-        let mut cases = Cases::new(o);
+        let mut cases = Cases::new(o, &Plan::drawn(o.readings.clone()));
         let list: Vec<Pending> = cases.by_ref().collect();
         assert_eq!(cases.drawn, cases.total);
         (list, cases.runs)
@@ -257,5 +273,51 @@ mod tests {
         expected.extend(["operator", "garbage"]);
         assert_eq!(names, expected);
         assert!(runs.iter().all(|r| r.kept == r.drawn), "{runs:?}");
+    }
+
+    /// In process, the generated cases draw every value of every reading (the corpus programs
+    /// run at the letter, with the pins); a candidate run's cases all carry its readings, those
+    /// told ahead too.
+    #[test]
+    fn campaigns_draw_every_reading_and_candidate_runs_fix_theirs() {
+        let o = Options { cases: 8, ..Options::default() };
+        let mut counts = crate::readings::Counts::default();
+        let (cases, _) = drain(&o);
+        for p in &cases {
+            match p.origin {
+                Origin::Corpus { .. } => assert!(p.config.readings.is_letter(), "{}", p.name),
+                Origin::Generated { .. } => counts.add(&p.config.readings),
+            }
+        }
+        for name in cycle_vocab::Readings::NAMES {
+            for value in cycle_vocab::Readings::values(name).unwrap() {
+                assert!(counts.get(name, value) > 0, "no case with {name}={value}: {counts:?}");
+            }
+        }
+        let pins = crate::readings::Pins::parse(&["g75.relief=against-step"]).unwrap();
+        let pinned = Options { readings: pins.clone(), cycles: Options::parse_cycles("g75").unwrap(), ..o.clone() };
+        let mut cases = Cases::new(&pinned, &Plan::drawn(pins.clone()));
+        assert!(cases.by_ref().all(|p| p.config.readings.get("g75.relief") == Some("against-step")));
+        let declared = crate::readings::Declared::parse(Some(&serde_json::json!({"g94.k": "start-minus-end"}))).unwrap();
+        let plan = Plan::declared(Some(declared), pins).unwrap();
+        let Plan::Declared { readings, .. } = plan else { panic!() };
+        let seen = std::sync::Mutex::new(Vec::new());
+        struct Told<'a>(&'a std::sync::Mutex<Vec<cycle_vocab::Readings>>);
+        impl Engine for Told<'_> {
+            fn name(&self) -> &str {
+                "told"
+            }
+            fn expand(&self, program: &[u8], config: &Config) -> cycle_vocab::text::Trace {
+                SpecEngine.expand(program, config)
+            }
+            fn prefetch(&self, _: &[u8], config: &Config) {
+                self.0.lock().unwrap().push(config.readings);
+            }
+        }
+        let told = Told(&seen);
+        let handed: Vec<Pending> = Ahead::new(Cases::new(&o, &plan), &told, 4).collect();
+        assert!(handed.len() > 100 && handed.iter().all(|p| p.config.readings == readings));
+        let seen = seen.into_inner().unwrap();
+        assert!(seen.len() == handed.len() && seen.iter().all(|r| *r == readings));
     }
 }

@@ -145,11 +145,13 @@ pub fn document(run: &Run, rows: &[Row]) -> Value {
             "cases_per_family": run.options.cases,
             "seed": run.options.seed,
             "shard": run.options.shard.map(|s| s.to_string()),
+            "readings": run.readings.json(),
             "shrink_steps": SHRINK_STEPS,
             "max_minimized_groups": MAX_MINIMIZED,
         },
         "families": run.families.iter().map(|f| json!({ "family": f.family, "seed": f.seed, "drawn": f.drawn, "kept": f.kept })).collect::<Vec<_>>(),
         "configurations": run.tally.configurations(),
+        "readings": run.readings.evidence(&run.tally.readings),
         "summary": {
             "passed": run.passed(),
             "cases": run.cases(),

@@ -183,6 +183,14 @@ fn identity(run: &Run, out: &mut String) {
     out.push_str("</table>\n");
 }
 
+/// The readings the cases ran under, and the cases per value of each reading.
+fn readings_cell(run: &Run) -> String {
+    let line = run.readings.line();
+    let line = line.strip_prefix("readings: ").unwrap_or(&line);
+    let counts = run.tally.readings.lines().iter().map(|l| escape(l)).collect::<Vec<_>>().join("<br>");
+    format!("{}<br><small>cases per value: {counts}</small>", escape(line))
+}
+
 fn summary(run: &Run, out: &mut String) {
     let candidate = match &run.candidate_argv {
         Some(argv) => format!(
@@ -212,12 +220,14 @@ fn summary(run: &Run, out: &mut String) {
         out,
         "<table><tr><th>reference</th><td>the executable spec <code>cycle-spec</code></td></tr>\
          <tr><th>candidate</th><td>{candidate}</td></tr>\
+         <tr><th>declared readings</th><td>{}</td></tr>\
          <tr><th>cases</th><td>{} ({} conform, {} diverge, {} fail)</td></tr>\
          <tr><th>cycles</th><td>{}</td></tr>\
          <tr><th>generated cases per family</th><td>{} (garbage: a fifth), seed {}</td></tr>\
          <tr><th>families</th><td>{}</td></tr>\
          <tr><th>duration</th><td>{:.1} s</td></tr>\
          <tr><th>documents compiled in</th><td>cyclecheck {}; docs/RULES.md {}; docs/INTERPRETATION.md {}</td></tr></table>",
+        readings_cell(run),
         run.cases(),
         run.conforming(),
         run.diverging(),

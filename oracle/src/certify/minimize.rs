@@ -161,7 +161,7 @@ mod tests {
     #[test]
     fn a_wrong_candidate_is_found_grouped_and_minimized() {
         let o = Options { cycles: Options::parse_cycles("g92").unwrap(), cases: 10, ..Options::default() };
-        let mut p = super::super::cases::Cases::new(&o).next().unwrap();
+        let mut p = super::super::cases::Cases::new(&o, &super::super::readings_plan::Plan::drawn(o.readings.clone())).next().unwrap();
         let judged = judge(&SpecEngine, &THREAD_X_OFF, &p.program, &p.config);
         assert!(judged.reference.is_some());
         let result = judged.result;

@@ -35,6 +35,7 @@ pub mod merge;
 pub mod minimize;
 pub mod plot;
 pub mod proofs;
+pub mod readings_plan;
 pub mod shard;
 pub mod tally;
 
@@ -92,6 +93,9 @@ pub struct Options {
     pub kani_log: Option<kani::KaniLog>,
     /// The slice of the run to judge (`--shard K/N`); `None`: every case.
     pub shard: Option<shard::Shard>,
+    /// `--reading` pins: fixed in every case of an in-process run (the others drawn per case);
+    /// merged with a candidate's declared readings.
+    pub readings: crate::readings::Pins,
 }
 
 impl Default for Options {
@@ -106,6 +110,7 @@ impl Default for Options {
             max_failures: DEFAULT_MAX_FAILURES,
             kani_log: None,
             shard: None,
+            readings: crate::readings::Pins::default(),
         }
     }
 }
@@ -224,6 +229,8 @@ pub struct Run {
     pub duration: Duration,
     /// The shards a merged bundle was joined from (empty for a run).
     pub merged_from: Vec<shard::ShardRun>,
+    /// The declared readings the cases ran under (their counts: `tally.readings`).
+    pub readings: readings_plan::Plan,
 }
 
 impl Run {
@@ -279,13 +286,14 @@ impl Run {
     /// and each failure kind with its first case.
     pub fn summary(&self) -> String {
         let mut s = format!(
-            "spec vs {}: {} cases, {} conform, {} diverge, {} fail ({:.1} s)\n",
+            "spec vs {}: {} cases, {} conform, {} diverge, {} fail ({:.1} s)\n{}\n",
             self.candidate,
             self.cases(),
             self.conforming(),
             self.diverging(),
             self.failures(),
-            self.duration.as_secs_f64()
+            self.duration.as_secs_f64(),
+            self.readings.line()
         );
         if let Some(st) = self.stopped {
             s.push_str(&format!(
@@ -346,7 +354,9 @@ impl std::fmt::Display for Error {
 }
 
 /// Runs the certification: every case, each written to `cases_out` as a line of
-/// `cases.jsonl` when judged, then the minimization of each divergence group.
+/// `cases.jsonl` when judged, then the minimization of each divergence group. A candidate is
+/// greeted first: its declared readings, merged with `options.readings`, are every case's (a
+/// pin that contradicts them is an error, before any case runs).
 pub fn run(options: &Options, cases_out: &mut dyn Write, progress: &mut dyn FnMut(Progress)) -> Result<Run, Error> {
     let candidate = match &options.candidate {
         None => None,
@@ -357,14 +367,20 @@ pub fn run(options: &Options, cases_out: &mut dyn Write, progress: &mut dyn FnMu
         Some(c) => c,
         None => &ImplEngine,
     };
-    let mut run = run_engine(options, engine, argv, cases_out, progress)?;
+    let plan = match &candidate {
+        None => readings_plan::Plan::drawn(options.readings.clone()),
+        Some(c) => readings_plan::Plan::declared(c.declared().ok(), options.readings.clone()).map_err(Error)?,
+    };
+    let mut run = run_engine(options, &plan, engine, argv, cases_out, progress)?;
     run.candidate_starts = candidate.as_ref().map_or(0, CandidateEngine::starts);
     Ok(run)
 }
 
-/// [`run`] against `engine`, whose command line is `argv` when it is an external candidate.
+/// [`run`] against `engine`, whose command line is `argv` when it is an external candidate, its
+/// cases under the readings of `plan`.
 pub fn run_engine(
     options: &Options,
+    plan: &readings_plan::Plan,
     engine: &dyn Engine,
     argv: Option<Vec<String>>,
     cases_out: &mut dyn Write,
@@ -378,7 +394,7 @@ pub fn run_engine(
     // An external candidate is told the next cases ahead, so its child computes while this
     // judges (a run stopped early has drawn those cases too).
     let lookahead = if argv.is_some() { crate::candidate::WINDOW } else { 0 };
-    let mut cases = cases::Ahead::new(cases::Cases::new(options), engine, lookahead);
+    let mut cases = cases::Ahead::new(cases::Cases::new(options, plan), engine, lookahead);
     while let Some(p) = cases.next() {
         let in_corpus = matches!(p.origin, Origin::Corpus { .. });
         if tally.cases % 8 == 0 {
@@ -424,6 +440,7 @@ pub fn run_engine(
         },
         duration: started.elapsed(),
         merged_from: Vec::new(),
+        readings: plan.clone(),
     })
 }
 

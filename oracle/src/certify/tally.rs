@@ -30,6 +30,8 @@ pub struct Tally {
     pub with_start: usize,
     /// Cases run with an operator script (OP.SCRIPT).
     pub with_operator_script: usize,
+    /// Cases per declared reading and value.
+    pub readings: crate::readings::Counts,
 }
 
 impl Tally {
@@ -63,6 +65,7 @@ impl Tally {
         self.with_parameters += usize::from(r.config.params != Params::default());
         self.with_start += usize::from((r.config.start_x, r.config.start_z) != (0, 0));
         self.with_operator_script += usize::from(!r.config.operator.is_empty());
+        self.readings.add(&r.config.readings);
     }
 
     /// The configurations the cases ran under, for `evidence.json`.

@@ -12,6 +12,11 @@
 //! Sometimes a literal program under a chosen configuration instead: the manuals' examples
 //! enter the seed corpus this way, and libFuzzer's byte mutations of them reach programs no
 //! builder writes.
+//!
+//! The declared readings (`crate::readings::from_bits`, one bit per reading, 0 the letter): a
+//! built input's byte after its knobs, a literal input's byte after its configuration byte when
+//! that has bit 5 set. Inputs written before the readings (shorter, bit 5 clear) run under the
+//! letter, as they did.
 
 use crate::gen::{self, Case, KNOBS};
 use crate::registry::{self, Family, FAMILIES};
@@ -21,9 +26,11 @@ use cycle_vocab::{Config, Dialect, Grid, Increment, Units};
 /// A cycle command: built from knobs, or literal.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum CycleInput {
-    Built { generator: Generator, knobs: Vec<u32> },
-    /// A program under the configuration of `literal_config` `config`.
-    Literal { config: u8, program: Vec<u8> },
+    /// `readings`: the bits of the declared readings (`crate::readings::from_bits`).
+    Built { generator: Generator, knobs: Vec<u32>, readings: u8 },
+    /// A program under the configuration of `literal_config` `config`, with the readings of
+    /// `readings`.
+    Literal { config: u8, readings: u8, program: Vec<u8> },
 }
 
 /// A knob-built generator of `crate::gen`.
@@ -74,6 +81,11 @@ impl Generator {
 const FIRST_BYTES: u8 = 20;
 const LITERAL: u8 = 13;
 
+/// Bit 5 of a literal input's configuration byte: a readings byte follows it.
+const READINGS_FOLLOW: u8 = 32;
+/// The bits of a readings byte that choose readings (one per reading).
+const READING_BITS: u8 = (1 << cycle_vocab::Readings::NAMES.len()) - 1;
+
 /// The families the first 20 bytes build as themselves (bytes 0–6 build G76, G78 and FANUC G76
 /// through the multipass generator, so those three get bytes of their own after the 20).
 const FIRST_FAMILIES: [&str; 3] = ["g92", "g162", "g32"];
@@ -90,7 +102,7 @@ fn family(name: &str) -> Generator {
 
 /// The configuration of a literal program: bit 0 FANUC, bit 1 inch, bit 2 ISC, bit 3 `nc201`
 /// (before bit 0), bit 4 `x_radius` = 1 (NC201.XMODE; other dialects alarm on it). Bits 5–7 are
-/// ignored.
+/// ignored here (bit 5 of the input's byte says a readings byte follows).
 pub fn literal_config(bits: u8) -> Config {
     let units = if bits & 2 != 0 { Units::Inch } else { Units::Metric };
     let increment = if bits & 4 != 0 { Increment::Isc } else { Increment::Isb };
@@ -125,9 +137,10 @@ impl<'a> Arbitrary<'a> for CycleInput {
             11 => Generator::Soup,
             12 => Generator::Mutant,
             13..=15 => {
-                let config = u.arbitrary::<u8>()? & 31;
+                let byte = u.arbitrary::<u8>()?;
+                let readings = if byte & READINGS_FOLLOW != 0 { u.arbitrary::<u8>()? & READING_BITS } else { 0 };
                 let program = u.bytes(u.len())?.to_vec();
-                return Ok(CycleInput::Literal { config, program });
+                return Ok(CycleInput::Literal { config: byte & 31, readings, program });
             }
             16 | 17 => family("g162"),
             18 | 19 => family("g32"),
@@ -135,7 +148,8 @@ impl<'a> Arbitrary<'a> for CycleInput {
             n => Generator::Family(added[usize::from(n - FIRST_BYTES)]),
         };
         let knobs = (0..KNOBS).map(|_| u.arbitrary::<u32>()).collect::<arbitrary::Result<Vec<u32>>>()?;
-        Ok(CycleInput::Built { generator, knobs })
+        let readings = u.arbitrary::<u8>()? & READING_BITS;
+        Ok(CycleInput::Built { generator, knobs, readings })
     }
 }
 
@@ -143,12 +157,18 @@ impl CycleInput {
     /// Reads the input from fuzz bytes (any bytes make an input).
     pub fn from_bytes(data: &[u8]) -> CycleInput {
         CycleInput::arbitrary_take_rest(Unstructured::new(data))
-            .unwrap_or(CycleInput::Built { generator: Generator::Multipass, knobs: vec![0; KNOBS] })
+            .unwrap_or(CycleInput::Built { generator: Generator::Multipass, knobs: vec![0; KNOBS], readings: 0 })
     }
 
-    /// The fuzz bytes of a literal program under `config` (dialect and grid; the seed corpus).
+    /// The fuzz bytes of a literal program under `config` (dialect, grid, readings; the seed
+    /// corpus).
     pub fn literal_bytes(program: &[u8], config: &Config) -> Vec<u8> {
+        let readings = crate::readings::bits(&config.readings);
         let mut out = vec![LITERAL, literal_bits(config)];
+        if readings != 0 {
+            out[1] |= READINGS_FOLLOW;
+            out.push(readings);
+        }
         out.extend_from_slice(program);
         out
     }
@@ -156,9 +176,14 @@ impl CycleInput {
     /// The program and configuration the input describes.
     pub fn case(&self) -> Case {
         match self {
-            CycleInput::Built { generator, knobs } => gen::build(generator.builder(), knobs),
-            CycleInput::Literal { config, program } => {
-                Case { family: "literal", program: program.clone(), config: literal_config(*config) }
+            CycleInput::Built { generator, knobs, readings } => {
+                let mut case = gen::build(generator.builder(), knobs);
+                case.config.readings = crate::readings::from_bits(*readings);
+                case
+            }
+            CycleInput::Literal { config, readings, program } => {
+                let config = Config { readings: crate::readings::from_bits(*readings), ..literal_config(*config) };
+                Case { family: "literal", program: program.clone(), config }
             }
         }
     }
@@ -171,7 +196,7 @@ mod tests {
     #[test]
     fn empty_input_is_the_plain_multipass_program() {
         let i = CycleInput::from_bytes(&[]);
-        assert_eq!(i, CycleInput::Built { generator: Generator::Multipass, knobs: vec![0; KNOBS] });
+        assert_eq!(i, CycleInput::Built { generator: Generator::Multipass, knobs: vec![0; KNOBS], readings: 0 });
         let c = i.case();
         assert_eq!(c.family, "g76");
         assert!(c.text().contains("G76"), "{}", c.text());
@@ -179,7 +204,7 @@ mod tests {
 
     #[test]
     fn bytes_pick_family_and_knobs() {
-        let CycleInput::Built { generator, knobs } = CycleInput::from_bytes(&[7, 9, 0, 0, 0]) else { panic!() };
+        let CycleInput::Built { generator, knobs, .. } = CycleInput::from_bytes(&[7, 9, 0, 0, 0]) else { panic!() };
         assert_eq!(generator, family("g92"));
         assert_ne!(knobs[0], 0);
         assert!(knobs[1..].iter().all(|&k| k == 0));
@@ -225,10 +250,30 @@ mod tests {
         }
         // The byte after the families builds a thread case with an operator script; past it the
         // bytes wrap around to 0.
-        let CycleInput::Built { generator, knobs } = CycleInput::from_bytes(&[count, 0, 0, 0, 0]) else { panic!() };
+        let CycleInput::Built { generator, knobs, .. } = CycleInput::from_bytes(&[count, 0, 0, 0, 0]) else { panic!() };
         assert_eq!(generator, Generator::Operator);
         let scripted = (0..40u32).filter(|&k| !gen::build(generator.builder(), &[k, 0, 0, 0]).config.operator.is_empty()).count();
         assert!(scripted > 0 && knobs.len() == KNOBS, "{scripted}");
         assert_eq!(CycleInput::from_bytes(&[count + 1]), CycleInput::from_bytes(&[0]));
+    }
+
+    /// The readings byte: after a built input's knobs, after a literal's configuration byte
+    /// with bit 5; without it (every input written before the readings) the letter.
+    #[test]
+    fn a_readings_byte_chooses_the_readings() {
+        let short = [7u8, 9, 0, 0, 0];
+        assert!(CycleInput::from_bytes(&short).case().config.readings.is_letter());
+        let mut full = vec![7u8];
+        full.extend(std::iter::repeat_n(0u8, 4 * KNOBS));
+        assert!(CycleInput::from_bytes(&full).case().config.readings.is_letter());
+        full.push(0b10_0001);
+        let r = CycleInput::from_bytes(&full).case().config.readings;
+        assert_eq!(crate::readings::line(&r), "g94.k=start-minus-end, g96.rapid=allow, others the letter");
+        let config = Config { readings: crate::readings::from_bits(0b100), ..literal_config(1) };
+        let bytes = CycleInput::literal_bytes(b"G0 X1\n", &config);
+        assert_eq!(bytes[1] & READINGS_FOLLOW, READINGS_FOLLOW);
+        assert_eq!(CycleInput::from_bytes(&bytes).case().config, config);
+        let plain = CycleInput::literal_bytes(b"G0 X1\n", &literal_config(1));
+        assert_eq!((plain.len(), CycleInput::from_bytes(&plain).case().config), (2 + 6, literal_config(1)));
     }
 }

@@ -93,7 +93,7 @@ pub fn regression(target: Target, data: &[u8], origin: Origin) -> Option<(Vec<u8
             let input = CycleInput::from_bytes(data);
             let case = input.case();
             let built = match input {
-                CycleInput::Built { generator, knobs } => Some(built(generator, &knobs)),
+                CycleInput::Built { generator, knobs, .. } => Some(built(generator, &knobs)),
                 CycleInput::Literal { .. } => None,
             };
             (case.program, Some(case.config), built)

@@ -3,10 +3,9 @@
 //! (`fuzz/corpus/<target>/`, not committed).
 //!
 //! The seeds: every program of the built-in corpus (the manuals' examples and one program per
-//! feature) under its configuration — for the structured targets only those whose configuration
-//! a literal input carries (not a declared reading or a parameter set) — and, for the structured targets, the plain case of each
-//! generator family and a few built from fixed-seed random knobs, so the fuzzer starts from
-//! every family.
+//! feature) under its configuration and, for the structured targets, the plain case of each
+//! generator family and a few built from fixed-seed random knobs and readings, so the fuzzer
+//! starts from every family and every declared reading.
 
 use super::decoded::{Origin, ProgramCase};
 use super::replay::{built, case_for};
@@ -47,13 +46,14 @@ pub fn seeds(target: Target) -> Vec<(String, Vec<u8>, ProgramCase)> {
     let mut rng = 0x5eed_f022_u64;
     for generator in generators() {
         let name = generator.name();
-        let mut add = |seed: String, knobs: Vec<u32>| {
-            let case = gen::build(generator.builder(), &knobs);
+        let mut add = |seed: String, knobs: Vec<u32>, readings: u8| {
+            let mut case = gen::build(generator.builder(), &knobs);
+            case.config.readings = crate::readings::from_bits(readings);
             let origin = origin(target, format!("generator {name}, {seed}"));
             let c = case_for(target, &case.program, Some(case.config), origin, Some(built(generator, &knobs)));
             out.extend(c.map(|c| (format!("{name}_{seed}"), case.program, c)));
         };
-        add("plain".to_string(), Vec::new());
+        add("plain".to_string(), Vec::new(), 0);
         for i in 0..6 {
             let knobs = (0..KNOBS)
                 .map(|_| {
@@ -63,7 +63,8 @@ pub fn seeds(target: Target) -> Vec<(String, Vec<u8>, ProgramCase)> {
                     (rng >> 16) as u32
                 })
                 .collect();
-            add(format!("random_{i}"), knobs);
+            // Random seeds run under readings of their own: the fuzzer starts from each value.
+            add(format!("random_{i}"), knobs, (rng >> 8) as u8 & 63);
         }
     }
     out
@@ -91,6 +92,12 @@ pub fn encode(target: Target, program: &[u8], case: &ProgramCase) -> Result<Vec<
         if let Some(first) = first {
             let mut bytes = vec![first];
             bytes.extend(b.knobs.iter().flat_map(|k| k.to_le_bytes()));
+            // The readings byte follows every knob (the missing ones written as 0).
+            let readings = crate::readings::bits(&config.readings);
+            if readings != 0 {
+                bytes.extend(std::iter::repeat_n(0u8, 4 * KNOBS.saturating_sub(b.knobs.len())));
+                bytes.push(readings);
+            }
             if same(&bytes) {
                 return Ok(bytes);
             }

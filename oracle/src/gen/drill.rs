@@ -5,7 +5,9 @@
 //! F / S, ties of the rounding included), M29 in the block or before it, G80 after; and the
 //! register's alarms: the bottom at the R level, Q or P with a decimal point, Q or P out of
 //! range, no M29 (or a G80 between M29 and G84), no S or S out of range, no feed, refused words
-//! (X, U, C, K, I), the pass bound, `nc201`.
+//! (X, U, C, K, I), the pass bound, `nc201`. The rpm of G84 is a bare S or G97 S, sometimes
+//! after `G50 S` (the spindle maximum, G50.SMAX), sometimes missing behind only a `G50 S` or a
+//! G96 S (G96.SPEED: a surface speed, no rpm).
 
 use super::writer::tail;
 use super::{unit, Case, Dice, LEAD_UNIT};
@@ -64,15 +66,28 @@ fn build(dice: &mut Dice, tap: bool) -> Case {
         };
         let lead = d.range(LEAD_UNIT / 5, 3 * LEAD_UNIT);
         feed = if g98 { lead * s.unwrap_or(1).clamp(1, 2_000) + d.range(-1, 1) } else { lead };
-        let modes: Vec<(char, String)> = [
-            Some(('G', if g98 { "98" } else { "99" }.to_string())).filter(|_| g98 || d.chance(30)),
-            s.map(|s| ('S', s.to_string())),
-            Some(('M', "29".to_string())).filter(|_| !d.chance(4)),
-        ]
-        .into_iter()
-        .flatten()
-        .collect();
-        if d.chance(50) {
+        // The rpm: a bare S (G97 is in force), or G97 S; sometimes after a `G50 S` (the maximum,
+        // not a speed); sometimes only `G50 S` or `G96 S` and no rpm (`MISSING WORD S`).
+        let spindle = d.weighted(&[60, 25, 10, 3, 2]);
+        let max = s.unwrap_or(1).clamp(1, 99_999) + d.range(0, 3_000);
+        if spindle >= 2 {
+            w.block(&[('G', "50".into()), ('S', max.to_string())]);
+        }
+        if spindle == 4 {
+            w.block(&[('G', "96".into()), ('S', d.range(20, 300).to_string())]);
+        }
+        let speed: Vec<(char, String)> = match (spindle, s) {
+            (3 | 4, _) => Vec::new(),
+            (1, Some(s)) => vec![('G', "97".into()), ('S', s.to_string())],
+            (_, s) => s.map(|s| ('S', s.to_string())).into_iter().collect(),
+        };
+        let modes: Vec<(char, String)> = [Some(('G', if g98 { "98" } else { "99" }.to_string())).filter(|_| g98 || d.chance(30))]
+            .into_iter()
+            .flatten()
+            .chain(speed)
+            .chain(Some(('M', "29".to_string())).filter(|_| !d.chance(4)))
+            .collect();
+        if d.chance(50) || spindle == 1 {
             before = modes;
         } else {
             words = modes;

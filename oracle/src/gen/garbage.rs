@@ -13,7 +13,7 @@ pub fn strategy() -> BoxedStrategy<Case> {
     });
     let soup = knobs().prop_map(|k| soup(&mut Dice::new(&k)));
     let mutant = knobs().prop_map(|k| mutant(&mut Dice::new(&k)));
-    prop_oneof![bytes, soup, mutant].boxed()
+    super::drawn(prop_oneof![bytes, soup, mutant])
 }
 
 /// Random word soup: letters (either case, any address), numbers of every shape, separators,
@@ -30,13 +30,13 @@ pub fn soup(d: &mut Dice) -> Case {
                 out.push(if d.chance(20) { letter.to_ascii_lowercase() } else { letter });
                 out.push_str(&soup_number(d));
             }
-            1 => out.push_str(d.one_of(&["G92", "G76", "G78", "G0", "G00", "G1", "G20", "G21", "G18", "G97", "G92.1", "G-1"])),
+            1 => out.push_str(d.one_of(&["G92", "G76", "G78", "G0", "G00", "G1", "G20", "G21", "G18", "G97", "G96", "G50", "G92.1", "G-1"])),
             2 => out.push_str(d.one_of(&[" ", "\t", "  "])),
             3 => out.push_str(d.one_of(&["\n", ";", ";\n", "\r\n"])),
             4 => out.push_str(d.one_of(&["X", "Z", "U", "W", "P", "Q", "R", "F", "I", "J", "K", "L", "D", "E"])),
             5 => out.push_str(d.one_of(&["(comment)", "(open", "()", "(a(b)"])),
             6 => out.push_str(d.one_of(&["%", "%\n", "O1", "N10"])),
-            7 => out.push_str(d.one_of(&["M30", "M02", "M3", "M100", "M1.5", "M-1"])),
+            7 => out.push_str(d.one_of(&["M30", "M02", "M3", "M100", "M1.5", "M-1", "M98", "M99"])),
             8 => out.push_str(&soup_number(d)),
             9 => out.push(d.one_of(&['#', '/', '=', '[', '*', '$', '.', '-', '+'])),
             _ => out.push_str(d.one_of(&["G76 P020545 Q0.15 R0.5\n", "G76 X60 Z-60 P3 Q1.8 F3\n", "G0 X65 Z5\n", "G92 X58.7 Z-28 F3\n"])),

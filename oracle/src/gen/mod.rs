@@ -18,12 +18,16 @@
 //! - [`drill`]: G83 peck drilling and G84 rigid tapping (M003, read as FANUC lathe controls
 //!   do), valid and invalid.
 //! - [`garbage`]: random bytes, random word soup, and the corpus with a few bytes changed.
+//! - [`program`]: the program-structure wrappers every built case may get — a subprogram
+//!   (M98/M99) running part of it, a spindle-mode prelude (G50 S, G96, G97).
 //!
 //! Every structured case is built from a fixed-length vector of random *knobs* (`u32`s) by a
 //! deterministic builder ([`Builder`]): the builder draws each decision from the next knob, and
 //! a knob of 0 always takes the ordinary choice. proptest shrinks knobs toward 0, so a failing
-//! case shrinks toward the plainest program that still fails. The last [`SPELLING_KNOBS`] knobs
-//! choose the program's spelling ([`writer::Spelling`]), which no builder draws otherwise.
+//! case shrinks toward the plainest program that still fails. The [`SPELLING_KNOBS`] knobs from
+//! [`SPELLING_AT`] choose the program's spelling ([`writer::Spelling`]), which no builder draws
+//! otherwise; the [`program::STRUCTURE_KNOBS`] after them its structure ([`program::wrap`]). Each case's
+//! declared readings are drawn beside the knobs ([`drawn`]).
 //!
 //! Pass counts stay moderate: Δd is chosen relative to k − d so that a degressive schedule has
 //! at most about 40 rough passes (a constant one fewer), starts are few, and a large pass count
@@ -38,6 +42,7 @@ pub mod garbage;
 pub mod multipass;
 pub mod operator;
 pub mod peck;
+pub mod program;
 pub mod single_cut;
 pub mod thread_moves;
 pub mod writer;
@@ -85,11 +90,20 @@ pub fn seed_bytes(seed: u64) -> [u8; 32] {
     bytes
 }
 
-/// How many knobs a structured case draws from.
-pub const KNOBS: usize = 256;
+/// How many knobs a structured case draws from: the builder's, then the spelling's
+/// ([`SPELLING_AT`]), then the structure's ([`STRUCTURE_AT`]).
+pub const KNOBS: usize = STRUCTURE_AT + program::STRUCTURE_KNOBS;
 
-/// How many of the last knobs choose the spelling ([`writer::Spelling`]): no builder reaches them.
+/// How many knobs choose the spelling ([`writer::Spelling`]): no builder reaches them.
 pub const SPELLING_KNOBS: usize = 16;
+
+/// The first spelling knob: the builders draw from the knobs before it.
+pub const SPELLING_AT: usize = 240;
+
+/// The first of the [`program::STRUCTURE_KNOBS`] knobs, after the spelling knobs: they choose
+/// the program-structure wrappers ([`program::wrap`]). Knobs past the end of a short knob list
+/// are 0, so a fuzz input written before they existed builds the program it built then.
+pub const STRUCTURE_AT: usize = SPELLING_AT + SPELLING_KNOBS;
 
 /// The knobs: `KNOBS` random `u32`s.
 pub fn knobs() -> impl Strategy<Value = Vec<u32>> {
@@ -99,14 +113,33 @@ pub fn knobs() -> impl Strategy<Value = Vec<u32>> {
 /// A knob builder: the case its dice describe.
 pub type Builder = fn(&mut Dice) -> Case;
 
-/// The case the knobs describe; knobs past the end of `knobs` are 0 (the ordinary choice).
-pub fn build(builder: Builder, knobs: &[u32]) -> Case {
-    builder(&mut Dice::new(knobs))
+/// The knobs `knobs[from..from + n]`, as many of them as there are.
+fn window(knobs: &[u32], from: usize, n: usize) -> &[u32] {
+    knobs.get(from..).map_or(&[][..], |k| &k[..k.len().min(n)])
 }
 
-/// The cases of one builder.
+/// The case the knobs describe; knobs past the end of `knobs` are 0 (the ordinary choice). The
+/// builder's program, then the program-structure wrappers ([`program::wrap`]) from their knobs.
+pub fn build(builder: Builder, knobs: &[u32]) -> Case {
+    let case = builder(&mut Dice::new(knobs));
+    program::wrap(case, &mut Dice::new(window(knobs, STRUCTURE_AT, program::STRUCTURE_KNOBS)))
+}
+
+/// The cases of one builder, each under readings drawn for it ([`drawn`]).
 pub fn strategy(builder: Builder) -> BoxedStrategy<Case> {
-    knobs().prop_map(move |k| build(builder, &k)).boxed()
+    drawn(knobs().prop_map(move |k| build(builder, &k)))
+}
+
+/// `cases`, each under declared readings drawn for it (`crate::readings::from_bits`): each
+/// reading its letter half the time, so both engines run under every value. The draw shrinks
+/// toward the letter. A candidate run overrides them with the run's readings.
+pub fn drawn(cases: impl Strategy<Value = Case> + 'static) -> BoxedStrategy<Case> {
+    (cases, any::<u8>())
+        .prop_map(|(mut case, bits)| {
+            case.config.readings = crate::readings::from_bits(bits);
+            case
+        })
+        .boxed()
 }
 
 /// Any case: each registry family's generator, and garbage, alike often.
@@ -129,7 +162,7 @@ pub struct Dice<'a> {
 
 impl<'a> Dice<'a> {
     pub fn new(knobs: &'a [u32]) -> Dice<'a> {
-        Dice { knobs, at: 0, spelling: knobs.get(KNOBS - SPELLING_KNOBS..).unwrap_or(&[]) }
+        Dice { knobs, at: 0, spelling: window(knobs, SPELLING_AT, SPELLING_KNOBS) }
     }
 
     /// Dice over the case's spelling knobs (the same from every fork).
@@ -262,7 +295,7 @@ fn config(d: &mut Dice, fanuc: bool) -> Config {
             p.p5142_finish_passes = Some(d.range(1, 4));
         }
         if d.chance(30) {
-            p.p5143_tool_angle = Some((if fanuc { d.one_of(&[60, 55, 30, 29, 0, 80, 45]) } else { d.range(0, 99) as u32 }) as i64);
+            p.p5143_tool_angle = Some((if fanuc { d.one_of(&[60, 55, 30, 29, 0, 80, 45, 40]) } else { d.range(0, 99) as u32 }) as i64);
         }
         if d.chance(30) {
             p.p5144_infeed_mode = Some(d.range(0, 4));
@@ -295,3 +328,4 @@ fn cycle_start(dice: &mut Dice) -> (Config, writer::Writer) {
 
 #[cfg(test)]
 mod tests;
+

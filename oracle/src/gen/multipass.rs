@@ -222,6 +222,7 @@ pub fn build(cycle: Cycle, dice: &mut Dice) -> Case {
     if !d.chance(2) {
         second.push(('Q', w.micron(dd, dec, fanuc)));
     }
+    let mut gave_jk = false;
     if gsk_words {
         for letter in ['J', 'K'] {
             let v = match d.weighted(&[55, 25, 8, 4, 3]) {
@@ -232,6 +233,7 @@ pub fn build(cycle: Cycle, dice: &mut Dice) -> Case {
                 _ => -d.range(1, u),          // unsigned: negative is OUT OF RANGE
             };
             second.push((letter, w.length(v, dec)));
+            gave_jk = true;
         }
     }
     let lead = lead(d, grid);
@@ -246,9 +248,10 @@ pub fn build(cycle: Cycle, dice: &mut Dice) -> Case {
     }
     w.block(&second);
 
-    // Sometimes a second thread with the kept first block, or a G00 back.
+    // Sometimes a second thread with the kept first block, or a G00 back. Its block omits J and
+    // K, which G78 keeps (modal, M000): more often after a G78 block that gave them.
     let d = &mut dice.fork(8);
-    if d.chance(25) {
+    if d.chance(if cycle == Cycle::G78 && gave_jk { 50 } else { 25 }) {
         let (x, z) = (w.length(ax, dec), w.length(az, dec));
         w.block(&[('G', "0".to_string()), ('X', x), ('Z', z)]);
         if !d.chance(40) {

@@ -20,13 +20,11 @@ pub const FAMILIES: &[&str] = &["g92", "g76", "g78", "f76", "g162"];
 /// least one).
 pub fn strategy(families: Vec<&'static Family>) -> BoxedStrategy<Case> {
     let families: Vec<&'static Family> = families.into_iter().filter(|f| FAMILIES.contains(&f.name)).collect();
-    (knobs(), knobs())
-        .prop_map(move |(base, script)| {
-            let mut dice = Dice::new(&script);
-            let family = dice.one_of(&families);
-            scripted(super::build(family.build, &base), &mut dice)
-        })
-        .boxed()
+    super::drawn((knobs(), knobs()).prop_map(move |(base, script)| {
+        let mut dice = Dice::new(&script);
+        let family = dice.one_of(&families);
+        scripted(super::build(family.build, &base), &mut dice)
+    }))
 }
 
 /// A scripted case from one set of knobs (the fuzz input's `operator` generator): the first

@@ -64,12 +64,16 @@ fn taper(d: &mut Dice, cut: Cut, u: i64, w: i64, unit: i64) -> i64 {
         Cut::G94 => travel.abs(),
     };
     let against = -travel.signum();
-    match d.weighted(&[50, 20, 16, 8, 3, 3]) {
+    // Both signs reach the limit and one past it: under the reading g94.k = start-minus-end a K
+    // of the travel's sign is the one against it.
+    match d.weighted(&[50, 20, 16, 8, 3, 3, 4, 2]) {
         0 => 0,
         1 => travel.signum() * d.range(1, 10 * unit),
         2 if limit > 0 => against * d.range(1, limit),
         3 if limit > 0 => against * limit,
         4 if against != 0 => against * (limit + 1),
+        6 if limit > 0 && cut == Cut::G94 => -against * limit,
+        7 if against != 0 && cut == Cut::G94 => -against * (limit + 1),
         _ => d.range(-5 * unit, 5 * unit),
     }
 }

@@ -145,6 +145,34 @@ pub struct ConfigArgs {
     /// before event B). Parameter 18 (No.0018 bit 6) picks the G92 feed-hold behaviour.
     #[arg(long = "op", value_name = "ACTION")]
     pub ops: Vec<String>,
+    #[arg(long = "reading", value_name = "NAME=VALUE", value_parser = reading, help = readings_help())]
+    pub readings: Vec<String>,
+}
+
+/// One `--reading`, checked: an unknown name or value is refused, naming it and the legal ones.
+fn reading(text: &str) -> Result<String, String> {
+    cycle_oracle::readings::Pins::parse(&[text]).map(|_| text.to_string())
+}
+
+/// The readings and their values, for `--help`.
+fn reading_list() -> String {
+    let list: Vec<String> =
+        cycle_vocab::Readings::NAMES.iter().map(|n| format!("{n} = {}", cycle_vocab::Readings::values(n).unwrap_or(&[]).join(" | "))).collect();
+    list.join("; ")
+}
+
+fn readings_help() -> String {
+    format!(
+        "A declared reading, NAME=VALUE (repeatable; docs/INTERPRETATION.md, \"Declared readings\"): {}. The default is the manuals' letter, the first value",
+        reading_list()
+    )
+}
+
+fn certify_readings_help() -> String {
+    format!(
+        "A declared reading, NAME=VALUE (repeatable): {}. The default is the manuals' letter, the first value. With --candidate: merged with the readings the candidate declares in its greeting, which it is certified against (a contradiction stops the run, exit 2); without: fixed in every case, the others drawn per case",
+        reading_list()
+    )
 }
 
 /// A candidate and its limits (docs/CANDIDATE.md).
@@ -204,6 +232,8 @@ pub struct CorpusArgs {
     /// One line per program and a summary, or one JSON document.
     #[arg(long, value_enum, default_value_t = CorpusFormat::Text)]
     pub format: CorpusFormat,
+    #[arg(long = "reading", value_name = "NAME=VALUE", value_parser = reading, help = readings_help())]
+    pub readings: Vec<String>,
 }
 
 fn cycles_help() -> String {
@@ -243,6 +273,8 @@ pub struct CertifyArgs {
     /// Judge only shard K of N: case i of the corpus and of each family goes to shard i mod N + 1 (merge the shards' bundles with cyclecheck merge).
     #[arg(long, value_name = "K/N", value_parser = shard)]
     pub shard: Option<Shard>,
+    #[arg(long = "reading", value_name = "NAME=VALUE", value_parser = reading, help = certify_readings_help())]
+    pub readings: Vec<String>,
 }
 
 fn shard(text: &str) -> Result<Shard, String> {

@@ -32,6 +32,7 @@ pub fn run(a: &CertifyArgs) -> Result<u8, Bad> {
         max_failures: a.max_failures,
         kani_log,
         shard: a.shard,
+        readings: cycle_oracle::readings::Pins::parse(&a.readings).map_err(Bad)?,
     };
     if let Some(cmd) = &options.candidate {
         split_command(cmd).map_err(|e| Bad(format!("--candidate {cmd:?}: {e}")))?;

@@ -31,6 +31,7 @@ pub fn config(a: &ConfigArgs) -> Result<Config, Bad> {
         }
     }
     c.operator = cycle_oracle::operator::parse_script(&a.ops).map_err(|e| Bad(format!("--op {e}")))?;
+    c.readings = cycle_oracle::readings::Pins::parse(&a.readings).map_err(Bad)?.apply(c.readings);
     let decimals = c.grid.decimals();
     c.start_x = grid_value(&a.start_x, decimals).map_err(|e| Bad(format!("--start-x {:?}: {e}", a.start_x)))?;
     c.start_z = grid_value(&a.start_z, decimals).map_err(|e| Bad(format!("--start-z {:?}: {e}", a.start_z)))?;

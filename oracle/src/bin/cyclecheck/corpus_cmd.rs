@@ -20,7 +20,9 @@ macro_rules! outln {
 pub fn run(a: &CorpusArgs) -> Result<u8, Bad> {
     let json = a.format == CorpusFormat::Json;
     let (spec, imp) = (SpecEngine, ImplEngine);
-    let report = campaign::run((&spec, &imp), corpus::cases());
+    let pins = cycle_oracle::readings::Pins::parse(&a.readings).map_err(Bad)?;
+    let cases = corpus::cases().map(|(name, program, config)| (name, program, cycle_vocab::Config { readings: pins.apply(config.readings), ..config }));
+    let report = campaign::run((&spec, &imp), cases);
     let mut out = String::new();
     if json {
         let programs: Vec<_> = report
@@ -55,6 +57,7 @@ pub fn run(a: &CorpusArgs) -> Result<u8, Bad> {
         let doc = serde_json::json!({
             "reference": report.engines.0,
             "candidate": report.engines.1,
+            "readings": cycle_oracle::readings::line(&pins.apply(cycle_vocab::Readings::default())),
             "programs": programs,
             "summary": {
                 "programs": report.cases(),
@@ -81,12 +84,13 @@ pub fn run(a: &CorpusArgs) -> Result<u8, Bad> {
         }
         outln!(
             out,
-            "\n{} programs: {} conform, {} diverge ({} vs {}); by cycle: {}",
+            "\n{} programs: {} conform, {} diverge ({} vs {}; readings: {}); by cycle: {}",
             report.cases(),
             report.conforming(),
             report.cases() - report.conforming(),
             report.engines.0,
             report.engines.1,
+            cycle_oracle::readings::line(&pins.apply(cycle_vocab::Readings::default())),
             registry::counts_line(&report.by_cycle)
         );
     }

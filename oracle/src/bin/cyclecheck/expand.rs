@@ -9,7 +9,8 @@ use crate::Bad;
 use cycle_oracle::conformance::{self, alarm_summary};
 use cycle_oracle::engine::{Engine, FailureKind, ImplEngine, SpecEngine};
 use cycle_oracle::judge::{self, CaseResult};
-use cycle_oracle::{hint, registry};
+use cycle_oracle::candidate::CandidateEngine;
+use cycle_oracle::{hint, readings, registry};
 use cycle_vocab::text::Trace;
 use cycle_vocab::{Alarm, Config};
 use std::io::Write as _;
@@ -54,11 +55,21 @@ pub fn emit(text: &str) {
 }
 
 /// `diff`: each file through the reference and the candidate in lockstep; exit 0 when every
-/// file conforms (alarm or not), 1 on a divergence or a candidate failure.
+/// file conforms (alarm or not), 1 on a divergence or a candidate failure. A candidate is
+/// judged against the readings it declares in its greeting, merged with `--reading` (a
+/// contradiction is exit 2).
 pub fn diff(a: &DiffArgs) -> Result<u8, Bad> {
-    let config = config(&a.config)?;
+    let mut config = config(&a.config)?;
     check_files(&a.files)?;
-    let candidate = judge::candidate_engine(a.candidate.candidate.as_deref(), a.candidate.limits()).map_err(Bad)?;
+    let candidate: Box<dyn Engine> = match a.candidate.candidate.as_deref() {
+        None => judge::candidate_engine(None, a.candidate.limits()).map_err(Bad)?,
+        Some(cmd) => {
+            let c = CandidateEngine::new(cmd, a.candidate.limits()).map_err(|e| Bad(format!("--candidate: {e}")))?;
+            let pins = readings::Pins::parse(&a.config.readings).map_err(Bad)?;
+            config.readings = readings::settle(&c.declared().unwrap_or(readings::Declared::NONE), &pins).map_err(Bad)?;
+            Box::new(c)
+        }
+    };
     let json = a.format == FormatArg::Json;
     let several = a.files.len() > 1;
     let mut diverged = false;

@@ -113,6 +113,9 @@ fn options(doc: &Value, kani_log: Option<kani::KaniLog>) -> Result<Options, Stri
         max_failures: c["max_failures"].as_u64().map_or(defaults.max_failures, |n| n as u32),
         kani_log,
         shard: None,
+        readings: match super::readings_plan::Plan::from_json(&p["readings"])? {
+            super::readings_plan::Plan::Drawn { pinned } | super::readings_plan::Plan::Declared { pinned, .. } => pinned,
+        },
     })
 }
 
@@ -127,6 +130,7 @@ fn add_configurations(t: &mut tally::Tally, doc: &Value) {
     t.with_parameters += c["cases_with_parameters_set"].as_u64().unwrap_or(0) as usize;
     t.with_start += c["cases_with_a_start_point"].as_u64().unwrap_or(0) as usize;
     t.with_operator_script += c["cases_with_an_operator_script"].as_u64().unwrap_or(0) as usize;
+    t.readings.add_json(&doc["readings"]["cases"]);
 }
 
 /// Merges the shards into `request.out`; the merged run, as its bundle says.
@@ -229,6 +233,7 @@ pub fn merge(request: &Request) -> Result<Run, String> {
     (tally.dialect, tally.grid) = (configurations.dialect, configurations.grid);
     (tally.with_parameters, tally.with_start) = (configurations.with_parameters, configurations.with_start);
     tally.with_operator_script = configurations.with_operator_script;
+    tally.readings = configurations.readings;
     let run = Run {
         candidate: first["candidate"]["name"].as_str().unwrap_or("impl").to_string(),
         candidate_argv: serde_json::from_value(first["candidate"]["command"].clone()).unwrap_or(None),
@@ -243,6 +248,7 @@ pub fn merge(request: &Request) -> Result<Run, String> {
         proofs: proofs::Proofs::check(options.kani_log.clone()),
         duration: Duration::from_secs_f64(duration),
         merged_from,
+        readings: super::readings_plan::Plan::from_json(&first["parameters"]["readings"])?,
         options,
     };
     let mut plot_error = None;

@@ -41,7 +41,8 @@ fn tmp(name: &str) -> PathBuf {
 fn certify(options: &Options, engine: &dyn Engine, out: &Path) {
     let staging = bundle::Staging::create(out).unwrap();
     let mut cases = std::io::BufWriter::new(staging.create_file("cases.jsonl").unwrap());
-    let run = run_engine(options, engine, None, &mut cases, &mut |_| {}).unwrap();
+    let plan = super::super::readings_plan::Plan::drawn(options.readings.clone());
+    let run = run_engine(options, &plan, engine, None, &mut cases, &mut |_| {}).unwrap();
     drop(cases);
     for (rel, contents) in bundle::files(&run) {
         staging.write(&rel, &contents).unwrap();
