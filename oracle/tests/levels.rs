@@ -202,3 +202,33 @@ fn third_party_check_compares_counts() {
     assert!(text.contains(&format!("- Campaign 1: cycles g92; 6 cases per family; seed 3 :: {changed}")) && text.contains(&format!("+ Campaign 1: cycles g92; 6 cases per family; seed 3 :: {row}")), "{text}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `diff --candidate` honours the greeting's level.
+#[test]
+fn diff_compares_at_the_declared_level() {
+    if !python3() {
+        return;
+    }
+    let program = Path::new(env!("CARGO_MANIFEST_DIR")).join("../corpus/g92_example.nc");
+    let o = Command::new(exe()).arg("diff").arg(&program).args(["--candidate", &candidate("")]).output().unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
+    assert!(stdout(&o).starts_with("conform at comparison level motion"), "{}", stdout(&o));
+    let o = Command::new(exe()).arg("diff").arg(&program).args(["--format", "json", "--candidate", &candidate("--plant-bug")]).output().unwrap();
+    let doc: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!((o.status.code(), doc["level"].as_str(), doc["divergence"]["level"].as_str()), (Some(1), Some("motion"), Some("motion")));
+}
+
+/// A bad deviations file stops certify before anything runs: exit 2, the key and the line named.
+#[test]
+fn a_bad_deviations_file_is_refused_with_its_line() {
+    let dir = temp("bad-deviations");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("d.toml");
+    std::fs::write(&file, "[[deviation]]\nrule = \"G92.PULLOUT\"\nreason = \"r\"\n\n[[deviation]]\nrule = \"G92.NOPE\"\nreason = \"r\"\n").unwrap();
+    let out = dir.join("bundle");
+    let o = Command::new(exe()).args(["certify", "--cycles", "g92", "--cases", "1", "--out"]).arg(&out).arg("--deviations").arg(&file).output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("line 6: rule") && err.contains("G92.NOPE") && !out.exists(), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -310,6 +310,7 @@ fn dwell_and_spindle_events_are_compared() {
 /// Below `full` only moves are compared, indexed among the moves; the alarm by its code
 /// (`motion`) or by its presence (`motion-alarm-presence`).
 #[test]
+#[allow(clippy::result_large_err)]
 fn levels_compare_moves_and_less_of_the_alarm() {
     let at = |level: Level, r: &Trace, c: &Trace| {
         let stream = c.events.iter().copied().map(Ok).chain(c.alarm.map(Err));
