@@ -8,6 +8,10 @@ use serde::Deserialize;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
+/// The `[notes]` key of a divergence group without a reference rule (extra events, or an
+/// alarm after a reference trace that ends cleanly).
+pub const NO_RULE: &str = "none";
+
 /// One manifest, read and checked.
 #[derive(Clone, Debug)]
 pub struct Manifest {
@@ -26,6 +30,8 @@ pub struct Manifest {
     pub ci: bool,
     /// Per-case time limit, when not the default.
     pub timeout_ms: Option<u64>,
+    /// Consecutive candidate failures that stop a campaign, when not the default (0: never).
+    pub max_failures: Option<u32>,
     pub campaigns: Vec<Campaign>,
     /// One sentence per rule ID of a divergence group: which side follows the manual, and why.
     pub notes: BTreeMap<String, String>,
@@ -65,6 +71,7 @@ struct Raw {
     #[serde(default)]
     ci: bool,
     timeout_ms: Option<u64>,
+    max_failures: Option<u32>,
     #[serde(default)]
     campaign: Vec<Campaign>,
     #[serde(default)]
@@ -124,6 +131,7 @@ impl Manifest {
             deviations: raw.deviations,
             ci: raw.ci,
             timeout_ms: raw.timeout_ms,
+            max_failures: raw.max_failures,
             campaigns: raw.campaign,
             notes: raw.notes,
             findings: raw.finding,
@@ -136,8 +144,8 @@ impl Manifest {
         }
         crate::candidate::split_command(&m.command).map_err(|e| format!("{}: command: {e}", path.display()))?;
         for rule in m.notes.keys() {
-            if cycle_vocab::Rule::from_id(rule).is_none() {
-                return Err(format!("{}: notes: {rule:?} is no rule ID of docs/RULES.md", path.display()));
+            if rule != NO_RULE && cycle_vocab::Rule::from_id(rule).is_none() {
+                return Err(format!("{}: notes: {rule:?} is no rule ID of docs/RULES.md (nor {NO_RULE:?})", path.display()));
             }
         }
         Ok(m)

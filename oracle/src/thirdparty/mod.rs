@@ -95,7 +95,8 @@ pub fn run_candidate(m: &Manifest, request: &Request, progress: &mut dyn FnMut(&
     let mut runs = Vec::new();
     for (i, campaign) in m.campaigns.iter().enumerate() {
         progress(&format!("third-party: {} campaign {} ({})", m.name, i + 1, campaign.label()));
-        let options = certify::Options { deviations: declarations.clone(), limits, ..campaign.options(&m.command)? };
+        let mut options = certify::Options { deviations: declarations.clone(), limits, ..campaign.options(&m.command)? };
+        options.max_failures = m.max_failures.unwrap_or(options.max_failures);
         let engine = CandidateEngine::new(&m.command, limits)?;
         let argv = Some(engine.argv().to_vec());
         let mut run = certify::run_engine(&options, &engine, argv, &mut std::io::sink(), &mut |_| {}).map_err(|e| e.0)?;

@@ -89,7 +89,7 @@ fn campaign(c: &CampaignRun, m: &Manifest, number: usize, out: &mut String) {
     let _ = writeln!(out, "Timing (never compared): {:.1} s, {} candidate process start(s).\n", run.duration.as_secs_f64(), run.candidate_starts);
     for g in &run.groups {
         let (kind, field, rule) = g.signature;
-        let rule_id = rule.map_or("none", |r| r.id());
+        let rule_id = rule.map_or(super::manifest::NO_RULE, |r| r.id());
         let field = field.map(|f| format!(", field {f}")).unwrap_or_default();
         let _ = writeln!(out, "#### Divergence group {rule_id}: {} case(s) ({kind}{field})\n", g.count);
         let note = m.notes.get(rule_id).map_or_else(|| format!("{NO_NOTE} (add one under [notes] in the manifest)"), |n| n.clone());
@@ -224,8 +224,8 @@ pub fn summary(reports: &[CandidateReport]) -> String {
                         t.fail,
                         verdict(&c.run)
                     );
-                    for g in c.run.groups.iter().filter(|g| !r.manifest.notes.contains_key(g.signature.2.map_or("none", |r| r.id()))) {
-                        let _ = writeln!(s, "  no note for divergence group {} in {}", g.signature.2.map_or("none", |r| r.id()), r.manifest.path.display());
+                    for g in c.run.groups.iter().filter(|g| !r.manifest.notes.contains_key(g.signature.2.map_or(super::manifest::NO_RULE, |r| r.id()))) {
+                        let _ = writeln!(s, "  no note for divergence group {} in {}", g.signature.2.map_or(super::manifest::NO_RULE, |r| r.id()), r.manifest.path.display());
                     }
                 }
                 for k in r.unused() {
@@ -235,4 +235,41 @@ pub fn summary(reports: &[CandidateReport]) -> String {
         }
     }
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn manifest(name: &str) -> Manifest {
+        Manifest {
+            path: format!("candidates/{name}/candidate.toml").into(),
+            name: name.to_string(),
+            expander: format!("{name} 1.0"),
+            command: format!("candidates/{name}/run"),
+            setup: "true".to_string(),
+            deviations: None,
+            ci: false,
+            timeout_ms: None,
+            max_failures: None,
+            campaigns: Vec::new(),
+            notes: Default::default(),
+            findings: Vec::new(),
+        }
+    }
+
+    /// A candidate not run keeps its previous section verbatim; one never run says so; one not
+    /// installed here (without a previous section) says that.
+    #[test]
+    fn sections_not_run_are_kept_from_the_previous_document() {
+        let all = [manifest("a"), manifest("b"), manifest("c")];
+        let previous = "intro\n<!-- candidate: a -->\n## a\n\n| G92 | 7 |\n<!-- end candidate: a -->\n";
+        let missing = CandidateReport { manifest: manifest("c"), declarations: Vec::new(), outcome: Outcome::NotInstalled("spawn failed".into()) };
+        let doc = document(&all, &[missing], Some(previous));
+        assert_eq!(section(&doc, "a"), section(previous, "a"));
+        assert!(section(&doc, "b").unwrap().contains("Not run yet."));
+        assert!(section(&doc, "c").unwrap().contains("**Not installed here** (spawn failed)"));
+        assert!(doc.starts_with("# Third-party expanders against the reference") && doc.contains("| a | a 1.0 | `candidates/a/run` |"));
+        assert_eq!(section("no markers", "a"), None);
+    }
 }
