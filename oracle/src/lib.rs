@@ -32,6 +32,7 @@ pub mod readings;
 pub mod reaper;
 pub mod readback;
 pub mod registry;
+pub mod thirdparty;
 
 pub use conformance::{check, Divergence, DivergenceKind};
 pub use engine::{Engine, ImplEngine, SpecEngine};

@@ -11,6 +11,7 @@
 
 use super::child::{Outgoing, Running};
 use super::{hello, parse_hello, parse_response, schema_for_case, split_command, version_of, Limits, Speaks};
+use crate::conformance::Level;
 use crate::engine::{Engine, Failure, FailureKind};
 use crate::readings::Declared;
 use cycle_vocab::text::Trace;
@@ -53,6 +54,8 @@ struct State {
     last_answer: Instant,
     next_id: u64,
     starts: u64,
+    /// The weakest level a greeted child declared.
+    weakest: Level,
 }
 
 impl CandidateEngine {
@@ -69,6 +72,7 @@ impl CandidateEngine {
             last_answer: Instant::now(),
             next_id: 0,
             starts: 0,
+            weakest: Level::Full,
         };
         Ok(CandidateEngine { argv, limits, state: Mutex::new(state) })
     }
@@ -90,6 +94,21 @@ impl CandidateEngine {
     /// What the last child said to the greeting (legacy before any).
     pub fn speaks(&self) -> Speaks {
         self.lock().speaks
+    }
+
+    /// Starts a child (when none runs) and greets it: what it says it speaks, or why it could
+    /// not be started or greeted. `certify --level` asks this before its run.
+    pub fn greet(&self) -> Result<Speaks, Failure> {
+        let mut s = self.lock();
+        if s.running.is_none() {
+            self.start(&mut s)?;
+        }
+        Ok(s.speaks)
+    }
+
+    /// The weakest comparison level a child of this engine declared (`full` before any).
+    pub fn weakest_level(&self) -> Level {
+        self.lock().weakest
     }
 
     fn lock(&self) -> std::sync::MutexGuard<'_, State> {
@@ -118,6 +137,7 @@ impl CandidateEngine {
                 Ok(speaks) => {
                     s.speaks = speaks;
                     s.declared = Some(speaks.declared);
+                    s.weakest = s.weakest.min(speaks.level);
                 }
                 Err(f) => {
                     s.greet = false;
@@ -266,6 +286,11 @@ impl Engine for CandidateEngine {
             s.queue.push_back(queued(program, config));
         }
         self.ask_first(&mut s, false)
+    }
+
+    /// The level the running child (or the last one) declared in its greeting.
+    fn level(&self) -> Level {
+        self.lock().speaks.level
     }
 
     /// Queues the case's request, sent as soon as the child has room for it.

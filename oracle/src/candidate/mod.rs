@@ -19,6 +19,7 @@
 //! - the child runs in a process group of its own, killed whole — with anything it started —
 //!   after a failure, at the end of the run and on SIGINT/SIGTERM ([`crate::reaper`]).
 
+use crate::conformance::Level;
 use crate::engine::{Failure, FailureKind};
 use crate::readings::Declared;
 use cycle_vocab::text::Trace;
@@ -188,12 +189,14 @@ pub struct Speaks {
     pub pipeline: bool,
     /// The declared readings it follows (`"readings"`; undeclared: the letter).
     pub declared: Declared,
+    /// What its traces hold, so what is compared (`"level"`, [`Level::Full`] when absent).
+    pub level: Level,
 }
 
 impl Speaks {
     /// A legacy candidate (it refused the greeting): sent every version, one request at a time,
     /// judged against the letter.
-    pub const LEGACY: Speaks = Speaks { versions: 0b1111, pipeline: false, declared: Declared::NONE };
+    pub const LEGACY: Speaks = Speaks { versions: 0b1111, pipeline: false, declared: Declared::NONE, level: Level::Full };
 
     pub fn speaks(self, version: u8) -> bool {
         (1..=8).contains(&version) && self.versions & (1 << (version - 1)) != 0
@@ -211,10 +214,10 @@ impl Speaks {
 }
 
 /// Reads the answer to the greeting: `{"id": 0, "versions": [..], "pipeline": bool, "readings":
-/// {name: value, …}}` (versions not offered are ignored; `pipeline` defaults to false;
-/// `readings`, the declared readings the candidate follows, to none: the letter), or a refusal
-/// `{"id": 0, "error"}` — a legacy candidate, [`Speaks::LEGACY`]. Anything else — an unknown
-/// reading or value too — is garbage.
+/// {name: value, …}, "level": name}` (versions not offered are ignored; `pipeline` defaults to
+/// false; `readings`, the declared readings the candidate follows, to none: the letter; `level`
+/// to `full`), or a refusal `{"id": 0, "error"}` — a legacy candidate, [`Speaks::LEGACY`].
+/// Anything else — an unknown reading, value or level too — is garbage.
 pub fn parse_hello(line: &[u8]) -> Result<Speaks, Failure> {
     let garbage = |why: &str| Failure { kind: FailureKind::Garbage, message: format!("{why}; answer: {}", snippet(line)) };
     let value: serde_json::Value = serde_json::from_slice(line).map_err(|e| garbage(&format!("not JSON ({e})")))?;
@@ -238,7 +241,11 @@ pub fn parse_hello(line: &[u8]) -> Result<Speaks, Failure> {
                 Some(p) => p.as_bool().ok_or_else(|| garbage("\"pipeline\" is true or false"))?,
             };
             let declared = Declared::parse(object.get("readings")).map_err(|e| garbage(&e))?;
-            Ok(Speaks { versions, pipeline, declared })
+            let level = match object.get("level") {
+                None => Level::Full,
+                Some(l) => l.as_str().ok_or_else(|| garbage("\"level\" is a level's name")).and_then(|l| Level::parse(l).map_err(|e| garbage(&e)))?,
+            };
+            Ok(Speaks { versions, pipeline, declared, level })
         }
         _ => Err(garbage("exactly one of \"versions\" (a list) and \"error\" expected")),
     }
@@ -389,14 +396,16 @@ mod tests {
         assert_eq!((g["schema"].as_str(), g["id"].as_u64()), (Some(HELLO), Some(0)));
         assert_eq!(g["versions"], serde_json::json!([1, 2, 3, 4]));
         let speaks = |line: &str| parse_hello(line.as_bytes());
-        assert_eq!(speaks(r#"{"id":0,"versions":[1,3,9]}"#), Ok(Speaks { versions: 0b101, pipeline: false, declared: Declared::NONE }));
-        assert_eq!(speaks(r#"{"id":0,"versions":[],"pipeline":true}"#), Ok(Speaks { versions: 0, pipeline: true, declared: Declared::NONE }));
+        assert_eq!(speaks(r#"{"id":0,"versions":[1,3,9]}"#), Ok(Speaks { versions: 0b101, pipeline: false, declared: Declared::NONE, level: Level::Full }));
+        assert_eq!(speaks(r#"{"id":0,"versions":[],"pipeline":true}"#), Ok(Speaks { versions: 0, pipeline: true, declared: Declared::NONE, level: Level::Full }));
+        assert_eq!(speaks(r#"{"id":0,"versions":[1],"level":"motion"}"#).map(|s| s.level), Ok(Level::Motion));
         assert_eq!(speaks(r#"{"id":0,"error":"unsupported schema"}"#), Ok(Speaks::LEGACY));
         for bad in ["", "[]", r#"{"id":1,"versions":[1]}"#, r#"{"id":0,"versions":1}"#, r#"{"id":0,"versions":["1"]}"#, r#"{"id":0}"#,
-            r#"{"id":0,"versions":[1],"pipeline":1}"#, r#"{"id":0,"versions":[1],"error":"x"}"#] {
+            r#"{"id":0,"versions":[1],"pipeline":1}"#, r#"{"id":0,"versions":[1],"error":"x"}"#,
+            r#"{"id":0,"versions":[1],"level":"moves"}"#, r#"{"id":0,"versions":[1],"level":2}"#] {
             assert_eq!(speaks(bad).map_err(|f| f.kind), Err(FailureKind::Garbage), "{bad}");
         }
-        assert_eq!(Speaks { versions: 0b101, pipeline: false, declared: Declared::NONE }.list(), "1, 3");
+        assert_eq!(Speaks { versions: 0b101, pipeline: false, declared: Declared::NONE, level: Level::Full }.list(), "1, 3");
         let declared = speaks(r#"{"id":0,"versions":[1],"readings":{"g94.k":"start-minus-end"}}"#).unwrap().declared;
         assert_eq!(declared.pairs(), vec![("g94.k", "start-minus-end")]);
         for bad in [r#"{"id":0,"versions":[1],"readings":{"g95.k":"x"}}"#, r#"{"id":0,"versions":[1],"readings":{"g73.c":"sometimes"}}"#] {

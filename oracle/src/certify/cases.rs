@@ -24,7 +24,12 @@ pub struct Pending {
     pub program: Vec<u8>,
     pub config: Config,
     pub tree: Option<Box<dyn ValueTree<Value = Case>>>,
+    /// The run's dialect and parameters, set over every configuration the tree yields
+    /// ([`Options::configure`]).
+    pub params: cycle_vocab::Params,
+    pub dialect: Option<cycle_vocab::Dialect>,
 }
+
 
 /// A generator's seed and size in a run.
 #[derive(Clone, Debug)]
@@ -120,9 +125,10 @@ impl<'o> Cases<'o> {
             self.drawn += 1;
             let mut config = p.config();
             self.plan.apply(&mut config);
+            self.options.configure(&mut config);
             if Shard::includes(self.options.shard, i) && covered(self.options, p.text.as_bytes(), &config) {
                 let (name, origin) = (p.name.to_string(), Origin::Corpus { path: p.path });
-                return Some(Pending { name, origin, program: p.text.as_bytes().to_vec(), config, tree: None });
+                return Some(Pending { name, origin, program: p.text.as_bytes().to_vec(), config, tree: None, params: self.options.params, dialect: self.options.dialect });
             }
         }
         None
@@ -150,7 +156,8 @@ impl<'o> Cases<'o> {
             if !Shard::includes(self.options.shard, i as usize) {
                 continue;
             }
-            let case = tree.current();
+            let mut case = tree.current();
+            self.options.configure(&mut case.config);
             if !covered(self.options, &case.program, &case.config) {
                 continue;
             }
@@ -159,7 +166,8 @@ impl<'o> Cases<'o> {
             }
             let family = g.family;
             let origin = Origin::Generated { family, index: i };
-            return Some(Pending { name: format!("{family}#{i}"), origin, program: case.program, config: case.config, tree: Some(tree) });
+            let (params, dialect) = (self.options.params, self.options.dialect);
+            return Some(Pending { name: format!("{family}#{i}"), origin, program: case.program, config: case.config, tree: Some(tree), params, dialect });
         }
     }
 }

@@ -11,18 +11,32 @@ use cycle_vocab::{Params, Rule};
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
 
+/// At most this many refusal messages are counted apart.
+pub const MAX_REASONS: usize = 64;
+/// Where the refusals of later messages are counted.
+pub const OTHER_REASONS: &str = "(other reasons)";
+
 /// The counts of a run.
 #[derive(Clone, Debug, Default)]
 pub struct Tally {
     pub cases: usize,
     pub conform: usize,
+    /// Cases whose first divergence is a declared deviation ([`CaseResult::Deviate`]).
+    pub deviate: usize,
     pub diverge: usize,
     pub fail: usize,
-    /// Per cycle run: cases, conform, diverge, fail.
-    pub by_cycle: BTreeMap<CycleRun, [usize; 4]>,
+    /// Per cycle run: cases, conform, deviate as declared, diverge, fail.
+    pub by_cycle: BTreeMap<CycleRun, [usize; 5]>,
+    /// Per declared deviation (its index): the cases that deviate so.
+    pub by_declaration: BTreeMap<usize, usize>,
     /// Per rule: cases whose reference trace carries it, divergences that name it.
     pub by_rule: BTreeMap<Rule, (usize, usize)>,
     pub failures_by_kind: BTreeMap<FailureKind, usize>,
+    /// Per cycle run: the refusals among its failures.
+    pub refused_by_cycle: BTreeMap<CycleRun, usize>,
+    /// The candidate's refusals by their message (the first [`MAX_REASONS`] messages; later
+    /// ones under [`OTHER_REASONS`]).
+    pub refusal_reasons: BTreeMap<String, usize>,
     /// Cases per dialect and per grid (`metric isb`), with parameters set, with a start point.
     pub dialect: BTreeMap<String, usize>,
     pub grid: BTreeMap<String, usize>,
@@ -44,17 +58,28 @@ impl Tally {
                 self.conform += 1;
                 c[1] += 1;
             }
+            CaseResult::Deviate { declaration, .. } => {
+                self.deviate += 1;
+                c[2] += 1;
+                *self.by_declaration.entry(*declaration).or_default() += 1;
+            }
             CaseResult::Diverge(d) => {
                 self.diverge += 1;
-                c[2] += 1;
+                c[3] += 1;
                 if let Some(rule) = d.rule {
                     self.by_rule.entry(rule).or_default().1 += 1;
                 }
             }
             CaseResult::Failure { failure, .. } => {
                 self.fail += 1;
-                c[3] += 1;
+                c[4] += 1;
                 *self.failures_by_kind.entry(failure.kind).or_default() += 1;
+                if failure.kind == FailureKind::Refused {
+                    *self.refused_by_cycle.entry(r.cycle).or_default() += 1;
+                    let known = self.refusal_reasons.contains_key(&failure.message) || self.refusal_reasons.len() < MAX_REASONS;
+                    let reason = if known { failure.message.clone() } else { OTHER_REASONS.to_string() };
+                    *self.refusal_reasons.entry(reason).or_default() += 1;
+                }
             }
         }
         for &rule in &r.rules {
@@ -101,6 +126,9 @@ fn result(r: &CaseResult) -> Value {
     match r {
         CaseResult::Conform => json!({ "result": "conform" }),
         CaseResult::Diverge(d) => json!({ "result": "diverge", "divergence": conformance::to_json(d) }),
+        CaseResult::Deviate { divergence, declaration } => {
+            json!({ "result": "deviate", "declaration": declaration, "divergence": conformance::to_json(divergence) })
+        }
         CaseResult::Failure { engine, failure } => json!({
             "result": "fail",
             "engine": engine,

@@ -4,6 +4,7 @@
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use cycle_oracle::candidate::Limits;
 use cycle_oracle::certify::{self, identity::LONG_VERSION, shard::Shard};
+use cycle_oracle::conformance::Level;
 use cycle_oracle::{gate, nightly, registry};
 use cycle_vocab::{Config, Dialect, Increment, Units};
 use std::path::PathBuf;
@@ -32,6 +33,8 @@ pub enum Command {
     Certify(CertifyArgs),
     /// Join the bundles of certify --shard 1/N … N/N into the bundle of the whole run.
     Merge(MergeArgs),
+    /// Certify the third-party expanders of candidates/*/candidate.toml and write their report (docs/THIRD-PARTY.md), or --check it.
+    ThirdParty(ThirdPartyArgs),
     /// The pre-merge gate: corpus, campaign, fuzz replay, cargo test (run from the repository root).
     Gate(GateArgs),
     /// The nightly fuzz campaign with cargo-fuzz; or write the seeds; or decode a fuzz input (run from the repository root).
@@ -275,6 +278,12 @@ pub struct CertifyArgs {
     pub shard: Option<Shard>,
     #[arg(long = "reading", value_name = "NAME=VALUE", value_parser = reading, help = certify_readings_help())]
     pub readings: Vec<String>,
+    /// Declared deviations (TOML, [[deviation]] rule, family, dialect, field, reason): a case whose first divergence matches one deviates as declared, never conforms (docs/CANDIDATE.md).
+    #[arg(long, value_name = "FILE")]
+    pub deviations: Option<PathBuf>,
+    /// Require this comparison level (full, motion, motion-alarm-presence): a candidate whose greeting declares a weaker one fails before the run (exit 1).
+    #[arg(long, value_name = "LEVEL", value_parser = Level::parse)]
+    pub level: Option<Level>,
 }
 
 fn shard(text: &str) -> Result<Shard, String> {
@@ -292,6 +301,28 @@ pub struct MergeArgs {
     /// The shards' bundles: every shard 1/N … N/N of one certify run, each once.
     #[arg(value_name = "BUNDLE", required = true)]
     pub bundles: Vec<PathBuf>,
+}
+
+#[derive(Args, Debug)]
+pub struct ThirdPartyArgs {
+    /// Where the manifests are: DIR/*/candidate.toml.
+    #[arg(long, value_name = "DIR", default_value = cycle_oracle::thirdparty::DEFAULT_CANDIDATES)]
+    pub candidates: PathBuf,
+    /// Only this candidate (repeatable); the others keep their sections of --out.
+    #[arg(long, value_name = "NAME")]
+    pub only: Vec<String>,
+    /// Only the candidates whose manifest says ci = true.
+    #[arg(long)]
+    pub ci: bool,
+    /// The report.
+    #[arg(long, value_name = "FILE", default_value = cycle_oracle::thirdparty::DEFAULT_OUT)]
+    pub out: PathBuf,
+    /// Regenerate the report in memory and compare its counts, verdicts and divergence groups with --out (exit 1 when they differ or a group has no note).
+    #[arg(long)]
+    pub check: bool,
+    /// List a candidate whose command cannot be started (or exits before the greeting) as not installed here, not as a failure.
+    #[arg(long)]
+    pub skip_missing: bool,
 }
 
 #[derive(Args, Debug)]

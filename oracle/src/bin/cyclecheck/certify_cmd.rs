@@ -3,7 +3,7 @@
 //! of the bundle and renames it into place; prints the summary. Exit 0 when every case conforms,
 //! 1 otherwise, 2 on bad options, an unusable `--out` or a failed write.
 
-use crate::args::{CertifyArgs, MergeArgs};
+use crate::args::{CertifyArgs, MergeArgs, ThirdPartyArgs};
 use crate::{bad, Bad};
 use cycle_oracle::candidate::split_command;
 use cycle_oracle::certify::{self, bundle::Staging};
@@ -33,9 +33,21 @@ pub fn run(a: &CertifyArgs) -> Result<u8, Bad> {
         kani_log,
         shard: a.shard,
         readings: cycle_oracle::readings::Pins::parse(&a.readings).map_err(Bad)?,
+        deviations: match &a.deviations {
+            None => Vec::new(),
+            Some(f) => certify::deviations::read(f).map_err(|e| Bad(format!("--deviations {e}")))?,
+        },
+        level: a.level,
+        ..certify::Options::default()
     };
     if let Some(cmd) = &options.candidate {
         split_command(cmd).map_err(|e| Bad(format!("--candidate {cmd:?}: {e}")))?;
+    }
+    if let Some(required) = a.level {
+        if let Some(refused) = level_refused(options.candidate.as_deref(), options.limits, required) {
+            crate::expand::emit(&format!("FAIL: {refused}\n"));
+            return Ok(1);
+        }
     }
     let out = &a.out;
     let staging = Staging::create(out).map_err(|e| Bad(format!("--out {}: {e}", out.display())))?;
@@ -53,9 +65,22 @@ pub fn run(a: &CertifyArgs) -> Result<u8, Bad> {
     Ok(report(&run, files.iter().filter(|(f, _)| f.starts_with("plots/")).count(), out))
 }
 
+/// Why `--level required` refuses the candidate before the run: it declares a weaker level in
+/// its greeting (or cannot be greeted). The production expander compares at `full`.
+fn level_refused(candidate: Option<&str>, limits: cycle_oracle::candidate::Limits, required: cycle_oracle::conformance::Level) -> Option<String> {
+    let declared = match candidate {
+        None => cycle_oracle::conformance::Level::Full,
+        Some(cmd) => match certify::declared_level(cmd, limits) {
+            Ok(l) => l,
+            Err(e) => return Some(format!("--level {required}: the candidate could not be greeted: {e}")),
+        },
+    };
+    (declared < required).then(|| certify::level_refusal(declared, required))
+}
+
 /// Prints the summary and what was written; the exit code.
 fn report(run: &certify::Run, plots: usize, out: &std::path::Path) -> u8 {
-    let verdict = if run.passed() { "PASS" } else { "FAIL" };
+    let verdict = run.verdict();
     let shard = match (run.options.shard, run.merged_from.len()) {
         (Some(s), _) => format!(" (shard {s}: merge the shards with cyclecheck merge)"),
         (None, 0) => String::new(),
@@ -76,6 +101,25 @@ pub fn merge(a: &MergeArgs) -> Result<u8, Bad> {
     let run = certify::merge::merge(&request).map_err(Bad)?;
     let plots = std::fs::read_dir(a.out.join("plots")).map_or(0, |d| d.count());
     Ok(report(&run, plots, &a.out))
+}
+
+/// `third-party`: runs the manifests' campaigns and writes the report, or compares it
+/// (`--check`); exit 0 written or up to date, 1 when the check finds a difference, 2 on a bad
+/// manifest or deviations file.
+pub fn third_party(a: &ThirdPartyArgs) -> Result<u8, Bad> {
+    let root = std::env::current_dir().map_err(|e| Bad(format!("cannot read the working directory: {e}")))?;
+    let request = cycle_oracle::thirdparty::Request {
+        candidates: a.candidates.clone(),
+        only: a.only.clone(),
+        ci: a.ci,
+        out: a.out.clone(),
+        check: a.check,
+        skip_missing: a.skip_missing,
+        root,
+    };
+    let (ok, message) = cycle_oracle::thirdparty::command(&request, &mut |line| eprintln!("{line}")).map_err(Bad)?;
+    crate::expand::emit(&message);
+    Ok(u8::from(!ok))
 }
 
 /// A progress bar on stderr: redrawn in place on a terminal, a line per phase otherwise.

@@ -116,6 +116,13 @@ fn options(doc: &Value, kani_log: Option<kani::KaniLog>) -> Result<Options, Stri
         readings: match super::readings_plan::Plan::from_json(&p["readings"])? {
             super::readings_plan::Plan::Drawn { pinned } | super::readings_plan::Plan::Declared { pinned, .. } => pinned,
         },
+        deviations: p["deviations"].as_array().into_iter().flatten().map(super::deviations::Deviation::from_json).collect::<Result<_, _>>()?,
+        level: p["level"].as_str().map(crate::conformance::Level::parse).transpose()?,
+        dialect: match p["dialect"].as_str() {
+            None => None,
+            Some(d) => Some(super::deviations::dialect(d).ok_or_else(|| format!("parameters.dialect: unknown dialect {d:?}"))?),
+        },
+        params: serde_json::from_value(p["params"].clone()).unwrap_or_default(),
     })
 }
 
@@ -249,6 +256,7 @@ pub fn merge(request: &Request) -> Result<Run, String> {
         duration: Duration::from_secs_f64(duration),
         merged_from,
         readings: super::readings_plan::Plan::from_json(&first["parameters"]["readings"])?,
+        level: first["candidate"]["level"].as_str().map_or(Ok(crate::conformance::Level::Full), crate::conformance::Level::parse)?,
         options,
     };
     let mut plot_error = None;
