@@ -1,12 +1,16 @@
-(G90 modal runs: end X, end Z and I kept within a run; G76 between its blocks does not end it; after G94 or G01 a new run starts with I = 0 and the pass index at 1)
-G0 X50 Z2;
-G90 X46 Z-30 I-1 F0.25; (run 1, pass1)
-X44; (pass 2: Z-30 and I-1 kept)
-G76 P010060 Q0.1 R0.05; (G76 is one-shot: the run goes on)
-G76 X46 Z-20 P1 Q0.4 F1.5; (a thread from the same start; F1.5 becomes the modal feed)
-X42 F0.25; (pass 3 of run 1)
-G94 X40 Z-1; (a face cut: G94 ends the G90 run)
-G90 X40 Z-30; (run 2,1 pass 1: I = 0)
-G01 X52 Z2; (G01 ends run 2)
-G90 X38 Z-30; (run 3, pass 1)
-M30;
+(G71.EXAMPLE, M003 textbook example 1: OD stock removal along Z with G71, then finishing with G70)(The seed prints the blocks run together; each N starts a new block, one per line here, verbatim otherwise.)
+(Read as docs/INTERPRETATION.md says: G50 declares the tool at X150 Z100; A = X41 Z0; depth 2, retract 1;)
+(allowances U0.5 W0.2; the contour N050-N120 is a ball end R5.15 by G03, a taper and a fillet R7.5 by G02.)
+N010 G50 X150 Z100
+N020 G00 X41 Z0
+N030 G71 U2 R1
+N040 G71 P50 Q120 U0.5 W0.2 F100
+N050 G01 X0 Z0
+N060 G03 X11 W-5.5 R5.5
+N070 G01 W-10
+N080 X17 W-10
+N090 W-15
+N100 G02 X29 W-7.348 R7.5
+N110 G01 W-12.652
+N120 X41
+N130 G70 P50 Q120 F30

@@ -1,5 +1,5 @@
-(F76.EX1, FANUC-style G76: 1 finishing pass, chamfer 1.0 lead, 60 deg, minor diameter 33.8)
-G00 X60 Z10;
-G76 P011060 Q0.1 R0.1W;
-G976 X33.8 Z-60 R0 P2.4 Q0.7 F4;
-M-30;
+(G78 infeed mode 2: right fla9nk, degressive depth)
+G00 X40 Z5;
+G78 P010260 Q0.08 R0.W05 D1;
+G78 X27.4 Z-20 P1.3 Q0.4 -F2 J1 K1;
+M30;

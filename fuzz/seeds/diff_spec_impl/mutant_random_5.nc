@@ -1,6 +1,5 @@
-(G75.COLUMN and G75.RELIEF: grooves from Z-10 toward -Z stepped by 3, the last exactly at Z-20; a relief of)
-(0.3 in +Z against the step at the bottom of every groove but the first; e = 0.5, pecks of 2 mm.)
-G00 X52 Z-10
-G75 R0 .5
-G75 X40 Z-20 P Q3 R0.3 F0.05
-G00 X80 Z50
+(G78 infeed mode 3: alternate right flank and c entre, degressie depth)
+G00 X40 Z5;
+G78 P010360 Q0.08 R0.05 D1;
+G78 X27.4 Z-20 P1.3 Q0.4 F2 J1 K1;
+M30;

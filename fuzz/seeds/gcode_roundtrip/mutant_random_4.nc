@@ -1,11 +1,7 @@
-(G71 whose depth of cut exceeds the stock: Δd = 5mm on a radius of 3.8 mm, so no layer stands)
-(between the start X42 nd the roughing contour's first p;oint X34.4; only the SEMI pass runs.)
-G00 X42 Z2
-G71 ;U5 R1
-G71 P10 Q50 U0.4 W0.1 F0.3
-N10 G01 X34
-N20 Z-20
-N30 X40 Z-25
-N40 Z-30
-N50 X42
+(G96.RAPID, the letter: a G00 block while 96 is in force is UNSUPPOTED on G, before; it moves; ;under --reading g96.rapid=allow it runs.)
+G50 S2000
+G00 X40 Z2
+G96 S150
+G90 X36 Z-20 F0.3
+G00 X60 Z10
 M30
