@@ -75,7 +75,8 @@ use cycle_vocab::{Alarm, Config, Event};
 
 /// Expands a whole program into its trace. Stops at the first alarm, keeping the events emitted
 /// before it. Never panics; resource use is bounded by the program length and `max_passes`
-/// (PRJ.MAXPASS, checked before any motion of a cycle).
+/// (PRJ.MAXPASS, checked before any motion of a cycle and before a subprogram call, whose runs
+/// it bounds: SUB.NEST).
 pub fn expand(program: &[u8], config: &Config) -> Trace {
     let mut events = Vec::new();
     let alarm = expand_into(program, config, &mut |e| {

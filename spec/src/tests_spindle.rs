@@ -165,3 +165,33 @@ fn g163() {
     let fanuc = Config { dialect: Dialect::Fanuc, ..Config::default() };
     assert_eq!(alarm_with("G163\n", &fanuc), (UnsupportedCode, Some('G'), Rule::PrjSupported, 1));
 }
+
+/// G96.SPEED, G50.SMAX: what an S word means in the block's state after its G codes — the
+/// maximum with G50, the surface speed under G96, else the rpm; G96 / G97 modal, in the order
+/// written; G97 without S keeps the last rpm.
+#[test]
+fn what_s_means() {
+    use crate::spindle::Spindle;
+    let mut sp = Spindle::default();
+    let mut apply = |text: &str, s: Option<i64>| {
+        let b = crate::lex::blocks(text.as_bytes()).next().and_then(Result::ok).expect("a block");
+        sp.take(&b, s);
+        sp.clone()
+    };
+    let start = Spindle::default();
+    assert!(!start.constant_surface && start.rpm.is_none() && start.surface.is_none() && start.max.is_none());
+    assert_eq!(apply("S500", Some(500)).rpm, Some(500));
+    let after = apply("G50 S1500", Some(1_500));
+    assert_eq!((after.max, after.rpm), (Some(1_500), Some(500)));
+    let after = apply("G96 S180", Some(180));
+    assert_eq!((after.constant_surface, after.surface, after.rpm), (true, Some(180), Some(500)));
+    let after = apply("G97", None);
+    assert_eq!((after.constant_surface, after.rpm), (false, Some(500)));
+    let after = apply("G96 G97 S800", Some(800));
+    assert_eq!((after.constant_surface, after.rpm, after.surface), (false, Some(800), Some(180)));
+    let after = apply("G97 G96 S90", Some(90));
+    assert_eq!((after.constant_surface, after.surface, after.rpm), (true, Some(90), Some(800)));
+    // G50 while G96 is in force: its S is the maximum, not a surface speed.
+    let after = apply("G50 X0 S2000", Some(2_000));
+    assert_eq!((after.max, after.surface), (Some(2_000), Some(90)));
+}

@@ -90,6 +90,8 @@ fn lexers_agree_on_blocks_comments_and_bytes() {
         b"G0 X1\x00\n",
         b"M30\nG0 X#\n",
         b"G0 X1 Z2 M02\n(unclosed\n",
+        b"N10.5 O20.5 S-3 T01.01 G0 X1\n",
+        // S is an integer under gsk and fanuc (G50.SMAX, "Spindle speed"): NOT INTEGER on S.
         b"N10 O20 S-3.5 T0101 G0 X1\n",
     ];
     for p in programs {

@@ -1,0 +1,20 @@
+(SUB.NEST: four levels, main -> O100 -> O200 -> O300 -> O400, the deepest FANUC allows; O200 runs twice.)
+G00 X50 Z2
+G90 X46 Z-20 F0.3
+M98 P100
+G00 X60 Z10
+M30
+O100
+M98 P20200
+M99
+O200
+G00 W-3
+M98 P300
+M99
+O300
+M98 P400
+M99
+O400
+G01 U-4 F0.1
+G00 U4
+M99
