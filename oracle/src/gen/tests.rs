@@ -198,3 +198,41 @@ fn wrapped_cases_endings() {
         eprintln!("WRAPPED {kind} {ending} {n}");
     }
 }
+
+/// The program structure and the words the declared readings turn on are generated: subprograms
+/// (repeated, nested five deep), the spindle modes (G50 S before G96, G97 S), G84 with an rpm
+/// from G97 S under G98 and with none behind `G50 S`, G78 blocks that leave J/K to the block
+/// before, FANUC G76 with a = 40, G94 K of both signs.
+#[test]
+fn structure_and_reading_points_are_generated() {
+    let text = |family: &str, n: usize| -> Vec<String> {
+        let strategy = crate::registry::find(family).map_or_else(|| any_case().boxed(), |f| f.strategy());
+        sample(strategy, n).iter().map(|c| c.text().to_ascii_uppercase().replace("\r\n", "\n")).collect()
+    };
+    // The digits right after each `letter` of a line.
+    let words = |line: &str, letter: char| -> Vec<String> {
+        line.match_indices(letter).map(|(i, _)| line[i + 1..].chars().take_while(|c| c.is_ascii_digit() || *c == '-').collect()).collect()
+    };
+    let any = text("any", 4_000);
+    let has = |needle: &str| any.iter().any(|t| t.contains(needle));
+    for needle in ["M98 P", "\nM99", "\nO", "G50 S", "G96 S", "G97 S"] {
+        assert!(has(needle), "no case writes {needle:?}");
+    }
+    assert!(any.iter().any(|t| t.matches("\nO").count() >= 5), "no subprogram nested five deep");
+    assert!(any.iter().any(|t| t.lines().any(|l| l.contains("M98 P2") && words(l, 'P')[0].len() >= 5)), "no repeated call");
+    let g84 = text("g84", 1_500);
+    assert!(g84.iter().any(|t| t.contains("G98") && t.contains("G97")), "no G84 under G98 with G97 S");
+    let no_rpm = |t: &String| t.contains("G50") && t.lines().filter(|l| l.contains('S')).all(|l| l.contains("G50") || l.contains("G96"));
+    assert!(g84.iter().any(no_rpm), "no G84 with only G50 S or G96 S before it");
+    let g78 = text("g78", 1_500);
+    let omits_jk = |t: &String| {
+        let blocks: Vec<&str> = t.lines().filter(|l| l.contains("G78") && (l.contains('X') || l.contains('U'))).collect();
+        blocks.len() >= 2 && (blocks[0].contains('J') || blocks[0].contains('K')) && !blocks[1].contains('J') && !blocks[1].contains('K')
+    };
+    assert!(g78.iter().any(omits_jk), "no G78 block leaving J/K to the one before");
+    let a40 = |l: &str| l.contains("G76") && !l.contains('X') && !l.contains('U') && words(l, 'P').iter().any(|p| p.len() >= 5 && p.ends_with("40"));
+    assert!(text("f76", 1_500).iter().any(|t| t.lines().any(a40)), "no FANUC G76 with a = 40");
+    let g94 = text("g94", 2_000);
+    let k = |neg: bool| g94.iter().any(|t| t.lines().any(|l| words(l, 'K').iter().any(|w| !w.is_empty() && w.starts_with('-') == neg && w != "-")));
+    assert!(k(true) && k(false), "G94 K of one sign only");
+}

@@ -105,7 +105,7 @@ fn merged_shards_are_the_unsharded_run() {
     assert!(summary["fail"].as_u64().unwrap() >= 1 && summary["conform"].as_u64().unwrap() >= 1, "{summary}");
     assert_eq!(joined["merged_from"].as_array().map(Vec::len), Some(4));
     assert_eq!(merged.cases(), summary["cases"].as_u64().unwrap() as usize);
-    for key in ["by_cycle", "by_rule", "divergences", "failures", "matrix", "families", "configurations"] {
+    for key in ["by_cycle", "by_rule", "divergences", "failures", "matrix", "families", "configurations", "readings"] {
         assert_eq!(joined[key], whole[key], "{key} differs");
     }
     assert_eq!(without_run_specifics(joined), without_run_specifics(whole));
