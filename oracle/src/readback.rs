@@ -35,14 +35,16 @@ pub struct Motion {
     pub lead_change_angle: u32,
     /// The floor of a shrinking lead, lead counts (0: none).
     pub lead_floor: i64,
+    /// The lead changes in steps (`L1` printed).
+    pub lead_steps: bool,
 }
 
 /// Every field of the move but its rule tag (not printed); a field added to `Move` does not
 /// compile here until the canonical form prints and reads it.
 impl From<&Move> for Motion {
     fn from(m: &Move) -> Motion {
-        let Move { kind, x, z, feed, cx, cz, angle, lead_change, lead_change_angle, lead_floor, rule: _ } = *m;
-        Motion { kind, x, z, feed, cx, cz, angle, lead_change, lead_change_angle, lead_floor }
+        let Move { kind, x, z, feed, cx, cz, angle, lead_change, lead_change_angle, lead_floor, lead_steps, rule: _ } = *m;
+        Motion { kind, x, z, feed, cx, cz, angle, lead_change, lead_change_angle, lead_floor, lead_steps }
     }
 }
 
@@ -152,7 +154,7 @@ fn motion(block: &Block, grid: Grid) -> Result<Motion, String> {
     let feed = if kind == MoveKind::Rapid { 0 } else { required(b'F', lead_dec)? };
     if matches!(kind, MoveKind::ArcCw | MoveKind::ArcCcw) {
         let (cx, cz) = (required(b'I', dec)?, required(b'K', dec)?);
-        return Ok(Motion { kind, x, z, feed, cx, cz, angle: 0, lead_change: 0, lead_change_angle: 0, lead_floor: 0 });
+        return Ok(Motion { kind, x, z, feed, cx, cz, angle: 0, lead_change: 0, lead_change_angle: 0, lead_floor: 0, lead_steps: false });
     }
     let count = |letter: u8| -> Result<Option<u32>, String> {
         match block.get(letter) {
@@ -170,7 +172,12 @@ fn motion(block: &Block, grid: Grid) -> Result<Motion, String> {
         (_, j) => j.unwrap_or(360_000),
     };
     let lead_floor = value(b'R', lead_dec)?.unwrap_or(0);
-    Ok(Motion { kind, x, z, feed, cx: 0, cz: 0, angle, lead_change, lead_change_angle, lead_floor })
+    let lead_steps = match count(b'L')? {
+        None => false,
+        Some(1) if lead_change != 0 => true,
+        Some(_) => return err('L', "printed only as L1, with K"),
+    };
+    Ok(Motion { kind, x, z, feed, cx: 0, cz: 0, angle, lead_change, lead_change_angle, lead_floor, lead_steps })
 }
 
 /// A printed value with exactly `places` decimals (the canonical form prints every digit).
@@ -213,6 +220,7 @@ mod tests {
             lead_change: -5,
             lead_change_angle: 360_000,
             lead_floor: 0,
+            lead_steps: false,
         };
         let second = Motion { z: -90_000, angle: 0, lead_change_angle: 90_000, lead_floor: 5, ..first };
         assert_eq!(m, vec![Printed::Motion(first), Printed::Motion(second)]);

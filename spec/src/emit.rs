@@ -97,7 +97,7 @@ impl<'s> Out<'s> {
     fn go(&mut self, kind: MoveKind, x: i128, z: i128, feed: i64, angle: u32, rule: Rule, line: u32) -> Result<(), Alarm> {
         let x = coordinate(x, b'X', line)?;
         let z = coordinate(z, b'Z', line)?;
-        let m = Move { kind, x, z, feed, cx: 0, cz: 0, angle, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule };
+        let m = Move { kind, x, z, feed, cx: 0, cz: 0, angle, lead_change: 0, lead_change_angle: 0, lead_floor: 0, lead_steps: false, rule };
         self.push(m);
         Ok(())
     }

@@ -112,6 +112,9 @@ impl Trace {
                         if m.lead_floor != 0 {
                             let _ = write!(line, " R{}", fixed(m.lead_floor, grid.lead_decimals()));
                         }
+                        if m.lead_steps {
+                            line.push_str(" L1");
+                        }
                         line
                     }
                     // The centre as absolute I (X, diameter) and K (Z), as a control reads them

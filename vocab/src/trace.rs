@@ -10,8 +10,11 @@
 //! synchronized at its own start; there the lead is `feed`, and it changes continuously by
 //! `lead_change` per `lead_change_angle` of spindle rotation. After a long-axis travel `s` (lead
 //! counts) the lead `L` satisfies `L² = feed² + 720 000·lead_change·s / lead_change_angle`. A
-//! shrinking lead stops changing once it is ≤ `lead_floor` (0: no floor). A constant lead has
-//! `lead_change = lead_change_angle = lead_floor = 0`.
+//! shrinking lead stops changing once it is ≤ `lead_floor` (0: no floor). With `lead_steps` the
+//! lead is instead `feed` for the first `lead_change_angle` of rotation, then changes by
+//! `lead_change` at the end of each such angle (a shrinking lead steps only while it is above
+//! `lead_floor`). A constant lead has `lead_change = lead_change_angle = lead_floor = 0` and
+//! `lead_steps` false.
 //!
 //! **Arcs** (G02/G03, ARC.*): an arc move carries its end point and its centre, absolute, X of
 //! the centre on diameter like every X (the centre as the engines decided it: given by I/K, or
@@ -66,21 +69,26 @@ pub struct Move {
     /// The lead at or below which a shrinking lead stops changing (G162.I), lead counts; 0: none.
     #[cfg_attr(feature = "std", serde(default))]
     pub lead_floor: i64,
+    /// The lead changes in steps of `lead_change`, one at the end of every `lead_change_angle`
+    /// of spindle rotation (G162.I under `g162.lead=steps`), instead of continuously; false for
+    /// a constant or continuously changing lead.
+    #[cfg_attr(feature = "std", serde(default, skip_serializing_if = "core::ops::Not::not"))]
+    pub lead_steps: bool,
     /// The rule this move realises.
     pub rule: Rule,
 }
 
 impl Move {
     pub const fn rapid(x: i64, z: i64, rule: Rule) -> Move {
-        Move { kind: MoveKind::Rapid, x, z, feed: 0, cx: 0, cz: 0, angle: 0, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule }
+        Move { kind: MoveKind::Rapid, x, z, feed: 0, cx: 0, cz: 0, angle: 0, lead_change: 0, lead_change_angle: 0, lead_floor: 0, lead_steps: false, rule }
     }
 
     pub const fn feed(x: i64, z: i64, feed: i64, rule: Rule) -> Move {
-        Move { kind: MoveKind::Feed, x, z, feed, cx: 0, cz: 0, angle: 0, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule }
+        Move { kind: MoveKind::Feed, x, z, feed, cx: 0, cz: 0, angle: 0, lead_change: 0, lead_change_angle: 0, lead_floor: 0, lead_steps: false, rule }
     }
 
     pub const fn thread(x: i64, z: i64, lead: i64, angle: u32, rule: Rule) -> Move {
-        Move { kind: MoveKind::Thread, x, z, feed: lead, cx: 0, cz: 0, angle, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule }
+        Move { kind: MoveKind::Thread, x, z, feed: lead, cx: 0, cz: 0, angle, lead_change: 0, lead_change_angle: 0, lead_floor: 0, lead_steps: false, rule }
     }
 
     /// A thread move whose lead starts at `lead` and changes by `change` per `change_angle`
@@ -100,14 +108,21 @@ impl Move {
         if change == 0 {
             return Move::thread(x, z, lead, angle, rule);
         }
-        Move { kind: MoveKind::Thread, x, z, feed: lead, cx: 0, cz: 0, angle, lead_change: change, lead_change_angle: change_angle, lead_floor: floor, rule }
+        Move { kind: MoveKind::Thread, x, z, feed: lead, cx: 0, cz: 0, angle, lead_change: change, lead_change_angle: change_angle, lead_floor: floor, lead_steps: false, rule }
+    }
+
+    /// [`Move::variable_thread`] with the lead changing in steps (`lead_steps`); a `change` of 0
+    /// gives the constant-lead form.
+    pub const fn stepped(self) -> Move {
+        let lead_steps = self.lead_change != 0;
+        Move { lead_steps, ..self }
     }
 
     /// An arc at `feed` to (`x`, `z`) about the centre (`cx`, `cz`): clockwise (G02) when
     /// `clockwise`, else counter-clockwise (G03).
     pub const fn arc(clockwise: bool, x: i64, z: i64, cx: i64, cz: i64, feed: i64, rule: Rule) -> Move {
         let kind = if clockwise { MoveKind::ArcCw } else { MoveKind::ArcCcw };
-        Move { kind, x, z, feed, cx, cz, angle: 0, lead_change: 0, lead_change_angle: 0, lead_floor: 0, rule }
+        Move { kind, x, z, feed, cx, cz, angle: 0, lead_change: 0, lead_change_angle: 0, lead_floor: 0, lead_steps: false, rule }
     }
 }
 

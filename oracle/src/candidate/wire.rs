@@ -85,6 +85,8 @@ struct Flat {
     #[serde(default)]
     lead_floor: Field<i64>,
     #[serde(default)]
+    lead_steps: Field<bool>,
+    #[serde(default)]
     index: Field<u32>,
     #[serde(default)]
     diameter_depth: Field<i64>,
@@ -102,7 +104,7 @@ impl Flat {
     /// How many fields besides `event` and `rule` are present.
     fn present(&self) -> usize {
         let n = [self.x.0.is_some(), self.z.0.is_some(), self.feed.0.is_some(), self.cx.0.is_some(), self.cz.0.is_some()];
-        let m = [self.lead_change.0.is_some(), self.lead_floor.0.is_some(), self.diameter_depth.0.is_some()];
+        let m = [self.lead_change.0.is_some(), self.lead_floor.0.is_some(), self.diameter_depth.0.is_some(), self.lead_steps.0.is_some()];
         let u = [self.angle.0.is_some(), self.lead_change_angle.0.is_some(), self.index.0.is_some(), self.ms.0.is_some()];
         let e = [self.kind.0.is_some(), self.state.0.is_some(), self.button.0.is_some(), self.reason.0.is_some()];
         n.iter().chain(&m).chain(&u).chain(&e).filter(|&&p| p).count()
@@ -122,7 +124,13 @@ impl Flat {
                     Kind::ArcCcw => MoveKind::ArcCcw,
                     _ => return None,
                 };
-                let optional = [self.cx.0.is_some(), self.cz.0.is_some(), self.lead_change_angle.0.is_some(), self.lead_floor.0.is_some()];
+                let optional = [
+                    self.cx.0.is_some(),
+                    self.cz.0.is_some(),
+                    self.lead_change_angle.0.is_some(),
+                    self.lead_floor.0.is_some(),
+                    self.lead_steps.0.is_some(),
+                ];
                 let m = Move {
                     kind,
                     x: self.x.0?,
@@ -134,6 +142,7 @@ impl Flat {
                     lead_change: self.lead_change.0?,
                     lead_change_angle: self.lead_change_angle.0.unwrap_or(0),
                     lead_floor: self.lead_floor.0.unwrap_or(0),
+                    lead_steps: self.lead_steps.0.unwrap_or(false),
                     rule,
                 };
                 (Event::Move(m), 6 + optional.iter().filter(|&&p| p).count())

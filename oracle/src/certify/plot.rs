@@ -141,8 +141,8 @@ fn segments(trace: &Trace, start: (i64, i64)) -> Vec<Segment> {
 fn differs(reference: &Trace, candidate: &Trace, index: usize) -> bool {
     match (reference.events.get(index), candidate.events.get(index)) {
         (Some(Event::Move(r)), Some(Event::Move(c))) => {
-            (r.kind, r.x, r.z, r.feed, r.cx, r.cz, r.angle, r.lead_change, r.lead_change_angle, r.lead_floor)
-                != (c.kind, c.x, c.z, c.feed, c.cx, c.cz, c.angle, c.lead_change, c.lead_change_angle, c.lead_floor)
+            (r.kind, r.x, r.z, r.feed, r.cx, r.cz, r.angle, r.lead_change, r.lead_change_angle, r.lead_floor, r.lead_steps)
+                != (c.kind, c.x, c.z, c.feed, c.cx, c.cz, c.angle, c.lead_change, c.lead_change_angle, c.lead_floor, c.lead_steps)
         }
         (Some(Event::Pass(r)), Some(Event::Pass(c))) => (r.index, r.kind, r.diameter_depth) != (c.index, c.kind, c.diameter_depth),
         (None, None) => false,

@@ -190,7 +190,7 @@ fn move_kind(k: MoveKind) -> &'static str {
 /// The first differing field of two moves (the rule tag is not compared). Every field is named,
 /// so a field added to `Move` does not compile here until it is compared.
 pub(crate) fn move_field(r: &Move, c: &Move) -> Option<(&'static str, String, String)> {
-    let Move { kind, x, z, feed, cx, cz, angle, lead_change, lead_change_angle, lead_floor, rule: _ } = *r;
+    let Move { kind, x, z, feed, cx, cz, angle, lead_change, lead_change_angle, lead_floor, lead_steps, rule: _ } = *r;
     differ("kind", move_kind(kind), move_kind(c.kind))
         .or_else(|| differ("x", x, c.x))
         .or_else(|| differ("z", z, c.z))
@@ -201,6 +201,7 @@ pub(crate) fn move_field(r: &Move, c: &Move) -> Option<(&'static str, String, St
         .or_else(|| differ("lead_change", lead_change, c.lead_change))
         .or_else(|| differ("lead_change_angle", lead_change_angle, c.lead_change_angle))
         .or_else(|| differ("lead_floor", lead_floor, c.lead_floor))
+        .or_else(|| differ("lead_steps", lead_steps, c.lead_steps))
 }
 
 /// The first differing field of two alarms: code, word, line, rule.
