@@ -136,7 +136,8 @@ pub fn judge(engines: (&dyn Engine, &dyn Engine), program: &[u8], config: &Confi
     let j = crate::judge::judge(engines.0, engines.1, program, config);
     let verdict = match j.result {
         CaseResult::Conform => Verdict::Conform(j.reference.as_ref().and_then(|r| r.alarm)),
-        CaseResult::Diverge(d) => Verdict::Diverge(d),
+        // No declarations here: a campaign judges spec against impl.
+        CaseResult::Diverge(d) | CaseResult::Deviate { divergence: d, .. } => Verdict::Diverge(d),
         CaseResult::Failure { engine, failure } if failure.kind == FailureKind::Panic => Verdict::Panic { engine, message: failure.message },
         CaseResult::Failure { engine, failure } => Verdict::Panic { engine, message: format!("candidate failure: {failure}") },
     };

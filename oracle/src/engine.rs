@@ -46,6 +46,13 @@ pub trait Engine {
         Ok(self.expand(program, config))
     }
 
+    /// What its traces hold, so what the relation compares ([`crate::conformance::Level`]):
+    /// in-process engines emit whole traces (`full`, the default); a candidate declares its
+    /// level in the greeting. Read after [`Engine::pull`] or [`Engine::try_expand`] of a case.
+    fn level(&self) -> crate::conformance::Level {
+        crate::conformance::Level::Full
+    }
+
     /// A hint: `program` under `config` will be asked for after the cases hinted before it, so
     /// an engine that works beside the caller (a candidate child) can start on it. Callers hint
     /// a bounded window ahead and then ask for those cases in order. By default nothing.

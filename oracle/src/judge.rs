@@ -21,6 +21,9 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 pub enum CaseResult {
     Conform,
     Diverge(Box<Divergence>),
+    /// The first divergence is one the candidate declared (`certify --deviations`): declaration
+    /// `declaration` of the run's list. Not a conformance: the rest of the case was not compared.
+    Deviate { divergence: Box<Divergence>, declaration: usize },
     /// An engine produced no trace (`engine` is `spec` or the candidate's name).
     Failure { engine: String, failure: Failure },
 }
@@ -39,6 +42,10 @@ impl CaseResult {
                 let field = d.field.map(|f| format!(", field {f}")).unwrap_or_default();
                 let rule = d.rule.map(|r| format!(", rule {r}")).unwrap_or_default();
                 format!("DIVERGE ({} at event {}{field}{rule})", d.kind, d.index)
+            }
+            CaseResult::Deviate { divergence, declaration } => {
+                let rule = divergence.rule.map(|r| format!(", rule {r}")).unwrap_or_default();
+                format!("DEVIATES as declared (declaration {}: {} at event {}{rule})", declaration + 1, divergence.kind, divergence.index)
             }
             CaseResult::Failure { engine, failure } => format!("FAIL ({engine} {})", failure.kind),
         }
@@ -141,7 +148,8 @@ fn run(reference: &dyn Engine, candidate: &dyn Engine, program: &[u8], config: &
         candidate_trace = Some(trace.clone());
         stream = stream_of(trace);
     }
-    let mut lockstep = Lockstep::new(config.grid, grid, stream);
+    // The level the candidate declared (its greeting precedes its first trace).
+    let mut lockstep = Lockstep::new(config.grid, grid, stream).at_level(candidate.level());
     let mut seen = Seen::default();
     let mut kept = keep.then(Vec::new);
     let mut candidate_panic = None;

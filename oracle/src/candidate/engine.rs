@@ -11,6 +11,7 @@
 
 use super::child::{Outgoing, Running};
 use super::{hello, parse_hello, parse_response, schema_for_case, split_command, version_of, Limits, Speaks};
+use crate::conformance::Level;
 use crate::engine::{Engine, Failure, FailureKind};
 use cycle_vocab::text::Trace;
 use cycle_vocab::Config;
@@ -47,6 +48,8 @@ struct State {
     last_answer: Instant,
     next_id: u64,
     starts: u64,
+    /// The weakest level a greeted child declared.
+    weakest: Level,
 }
 
 impl CandidateEngine {
@@ -61,6 +64,7 @@ impl CandidateEngine {
             last_answer: Instant::now(),
             next_id: 0,
             starts: 0,
+            weakest: Level::Full,
         };
         Ok(CandidateEngine { argv, limits, state: Mutex::new(state) })
     }
@@ -84,6 +88,21 @@ impl CandidateEngine {
         self.lock().speaks
     }
 
+    /// Starts a child (when none runs) and greets it: what it says it speaks, or why it could
+    /// not be started or greeted. `certify --level` asks this before its run.
+    pub fn greet(&self) -> Result<Speaks, Failure> {
+        let mut s = self.lock();
+        if s.running.is_none() {
+            self.start(&mut s)?;
+        }
+        Ok(s.speaks)
+    }
+
+    /// The weakest comparison level a child of this engine declared (`full` before any).
+    pub fn weakest_level(&self) -> Level {
+        self.lock().weakest
+    }
+
     fn lock(&self) -> std::sync::MutexGuard<'_, State> {
         self.state.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
     }
@@ -98,7 +117,10 @@ impl CandidateEngine {
             running.send(vec![Outgoing::Line(hello().into_bytes())]);
             let answer = running.answer(Instant::now() + self.limits.timeout, self.limits, self.limits.timeout);
             match answer.and_then(|(line, _)| parse_hello(&line)) {
-                Ok(speaks) => s.speaks = speaks,
+                Ok(speaks) => {
+                    s.speaks = speaks;
+                    s.weakest = s.weakest.min(speaks.level);
+                }
                 Err(f) => {
                     s.greet = false;
                     running.stop();
@@ -228,6 +250,11 @@ impl Engine for CandidateEngine {
             s.queue.push_back(queued(program, config));
         }
         self.ask_first(&mut s, false)
+    }
+
+    /// The level the running child (or the last one) declared in its greeting.
+    fn level(&self) -> Level {
+        self.lock().speaks.level
     }
 
     /// Queues the case's request, sent as soon as the child has room for it.

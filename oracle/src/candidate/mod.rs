@@ -19,6 +19,7 @@
 //! - the child runs in a process group of its own, killed whole — with anything it started —
 //!   after a failure, at the end of the run and on SIGINT/SIGTERM ([`crate::reaper`]).
 
+use crate::conformance::Level;
 use crate::engine::{Failure, FailureKind};
 use cycle_vocab::text::Trace;
 use cycle_vocab::Config;
@@ -157,11 +158,13 @@ pub struct Speaks {
     pub versions: u8,
     /// Whether it takes several requests before answering the first (answering in order).
     pub pipeline: bool,
+    /// What its traces hold, so what is compared (`"level"`, [`Level::Full`] when absent).
+    pub level: Level,
 }
 
 impl Speaks {
     /// A legacy candidate (it refused the greeting): sent every version, one request at a time.
-    pub const LEGACY: Speaks = Speaks { versions: 0b1111, pipeline: false };
+    pub const LEGACY: Speaks = Speaks { versions: 0b1111, pipeline: false, level: Level::Full };
 
     pub fn speaks(self, version: u8) -> bool {
         (1..=8).contains(&version) && self.versions & (1 << (version - 1)) != 0
@@ -178,8 +181,9 @@ impl Speaks {
     }
 }
 
-/// Reads the answer to the greeting: `{"id": 0, "versions": [..], "pipeline": bool}` (versions
-/// not offered are ignored; `pipeline` defaults to false), or a refusal `{"id": 0, "error"}` —
+/// Reads the answer to the greeting: `{"id": 0, "versions": [..], "pipeline": bool, "level":
+/// name}` (versions not offered are ignored; `pipeline` defaults to false, `level` to `full`;
+/// an unknown level is garbage), or a refusal `{"id": 0, "error"}` —
 /// a legacy candidate, [`Speaks::LEGACY`]. Anything else is garbage.
 pub fn parse_hello(line: &[u8]) -> Result<Speaks, Failure> {
     let garbage = |why: &str| Failure { kind: FailureKind::Garbage, message: format!("{why}; answer: {}", snippet(line)) };
@@ -203,7 +207,11 @@ pub fn parse_hello(line: &[u8]) -> Result<Speaks, Failure> {
                 None => false,
                 Some(p) => p.as_bool().ok_or_else(|| garbage("\"pipeline\" is true or false"))?,
             };
-            Ok(Speaks { versions, pipeline })
+            let level = match object.get("level") {
+                None => Level::Full,
+                Some(l) => l.as_str().ok_or_else(|| garbage("\"level\" is a level's name")).and_then(|l| Level::parse(l).map_err(|e| garbage(&e)))?,
+            };
+            Ok(Speaks { versions, pipeline, level })
         }
         _ => Err(garbage("exactly one of \"versions\" (a list) and \"error\" expected")),
     }
@@ -343,14 +351,16 @@ mod tests {
         assert_eq!((g["schema"].as_str(), g["id"].as_u64()), (Some(HELLO), Some(0)));
         assert_eq!(g["versions"], serde_json::json!([1, 2, 3, 4]));
         let speaks = |line: &str| parse_hello(line.as_bytes());
-        assert_eq!(speaks(r#"{"id":0,"versions":[1,3,9]}"#), Ok(Speaks { versions: 0b101, pipeline: false }));
-        assert_eq!(speaks(r#"{"id":0,"versions":[],"pipeline":true}"#), Ok(Speaks { versions: 0, pipeline: true }));
+        assert_eq!(speaks(r#"{"id":0,"versions":[1,3,9]}"#), Ok(Speaks { versions: 0b101, pipeline: false, level: Level::Full }));
+        assert_eq!(speaks(r#"{"id":0,"versions":[],"pipeline":true}"#), Ok(Speaks { versions: 0, pipeline: true, level: Level::Full }));
+        assert_eq!(speaks(r#"{"id":0,"versions":[1],"level":"motion"}"#).map(|s| s.level), Ok(Level::Motion));
         assert_eq!(speaks(r#"{"id":0,"error":"unsupported schema"}"#), Ok(Speaks::LEGACY));
         for bad in ["", "[]", r#"{"id":1,"versions":[1]}"#, r#"{"id":0,"versions":1}"#, r#"{"id":0,"versions":["1"]}"#, r#"{"id":0}"#,
-            r#"{"id":0,"versions":[1],"pipeline":1}"#, r#"{"id":0,"versions":[1],"error":"x"}"#] {
+            r#"{"id":0,"versions":[1],"pipeline":1}"#, r#"{"id":0,"versions":[1],"error":"x"}"#,
+            r#"{"id":0,"versions":[1],"level":"moves"}"#, r#"{"id":0,"versions":[1],"level":2}"#] {
             assert_eq!(speaks(bad).map_err(|f| f.kind), Err(FailureKind::Garbage), "{bad}");
         }
-        assert_eq!(Speaks { versions: 0b101, pipeline: false }.list(), "1, 3");
+        assert_eq!(Speaks { versions: 0b101, pipeline: false, level: Level::Full }.list(), "1, 3");
         assert!(!Speaks::LEGACY.speaks(5) && Speaks::LEGACY.speaks(4) && !Speaks::LEGACY.speaks(0));
         assert_eq!((version_of(SCHEMA_3), version_of(HELLO)), (Some(3), None));
     }

@@ -118,7 +118,7 @@ mod tests {
         odd.push_str("\n{\"id\": 5, \"schema\": \"cyclecheck-candidate/1\"}\nnot json");
         let answers = served(&[&requests[..], &[odd]].concat());
         assert_eq!(answers.len(), 7, "{answers:?}");
-        assert_eq!(parse_hello(answers[0].as_bytes()), Ok(Speaks { versions: 0b1111, pipeline: true }));
+        assert_eq!(parse_hello(answers[0].as_bytes()), Ok(Speaks { versions: 0b1111, pipeline: true, level: crate::conformance::Level::Full }));
         for (i, program) in [&g92[..], arcs, garbage].into_iter().enumerate() {
             let expected = Trace::collect(c.grid, cycle_impl::Expander::new(program, c));
             assert_eq!(parse_response(i as u64 + 1, answers[i + 1].as_bytes()), Ok(expected));
@@ -132,7 +132,7 @@ mod tests {
     #[test]
     fn answers_only_the_versions_offered() {
         let answers = served(&["{\"schema\":\"cyclecheck-candidate/hello\",\"id\":0,\"versions\":[2,4,7]}".to_string()]);
-        assert_eq!(parse_hello(answers[0].as_bytes()), Ok(Speaks { versions: 0b1010, pipeline: true }));
+        assert_eq!(parse_hello(answers[0].as_bytes()), Ok(Speaks { versions: 0b1010, pipeline: true, level: crate::conformance::Level::Full }));
         assert_eq!(unhex("4730ff"), Some(vec![0x47, 0x30, 0xff]));
         assert_eq!(unhex("473"), None);
         assert_eq!(unhex("zz"), None);

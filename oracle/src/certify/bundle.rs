@@ -25,7 +25,7 @@ pub fn files(run: &Run) -> Vec<(String, Vec<u8>)> {
     files_with_plots(run, &mut |r| {
         let (reference, candidate) = r.traces.as_ref()?;
         let (cand, div) = match &r.result {
-            CaseResult::Diverge(d) => (candidate.as_ref(), Some((d.index, d.rule))),
+            CaseResult::Diverge(d) | CaseResult::Deviate { divergence: d, .. } => (candidate.as_ref(), Some((d.index, d.rule))),
             _ => (None, None),
         };
         Some(plot::svg(&r.name, &r.config, reference, cand, div))

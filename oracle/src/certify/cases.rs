@@ -23,7 +23,10 @@ pub struct Pending {
     pub program: Vec<u8>,
     pub config: Config,
     pub tree: Option<Box<dyn ValueTree<Value = Case>>>,
+    /// The run's parameters, set over every configuration the tree yields ([`Options::params`]).
+    pub params: cycle_vocab::Params,
 }
+
 
 /// A generator's seed and size in a run.
 #[derive(Clone, Debug)]
@@ -72,6 +75,9 @@ fn generators(options: &Options) -> Vec<Generator> {
 /// Whether the run covers a case: always with every family; else when the case runs a covered
 /// family (the reference run once more, for its alarm line).
 fn covered(options: &Options, program: &[u8], config: &Config) -> bool {
+    if options.dialect.is_some_and(|d| d != config.dialect) {
+        return false;
+    }
     if options.all_cycles() {
         return true;
     }
@@ -103,10 +109,11 @@ impl<'o> Cases<'o> {
     fn next_corpus(&mut self) -> Option<Pending> {
         for (i, p) in self.corpus.by_ref() {
             self.drawn += 1;
-            let config = p.config();
+            let mut config = p.config();
+            self.options.configure(&mut config);
             if Shard::includes(self.options.shard, i) && covered(self.options, p.text.as_bytes(), &config) {
                 let (name, origin) = (p.name.to_string(), Origin::Corpus { path: p.path });
-                return Some(Pending { name, origin, program: p.text.as_bytes().to_vec(), config, tree: None });
+                return Some(Pending { name, origin, program: p.text.as_bytes().to_vec(), config, tree: None, params: self.options.params });
             }
         }
         None
@@ -134,7 +141,8 @@ impl<'o> Cases<'o> {
             if !Shard::includes(self.options.shard, i as usize) {
                 continue;
             }
-            let case = tree.current();
+            let mut case = tree.current();
+            self.options.configure(&mut case.config);
             if !covered(self.options, &case.program, &case.config) {
                 continue;
             }
@@ -143,7 +151,8 @@ impl<'o> Cases<'o> {
             }
             let family = g.family;
             let origin = Origin::Generated { family, index: i };
-            return Some(Pending { name: format!("{family}#{i}"), origin, program: case.program, config: case.config, tree: Some(tree) });
+            let params = self.options.params;
+            return Some(Pending { name: format!("{family}#{i}"), origin, program: case.program, config: case.config, tree: Some(tree), params });
         }
     }
 }

@@ -105,13 +105,35 @@ fn failures(run: &Run) -> Value {
     json!({ "by_kind": by_kind, "listed": listed, "listed_at_most": MAX_LISTED_FAILURES })
 }
 
+/// The declared deviations with the cases that deviate so; the unused ones listed apart.
+fn deviations(run: &Run) -> Value {
+    let declared: Vec<Value> = run
+        .options
+        .deviations
+        .iter()
+        .enumerate()
+        .map(|(k, d)| {
+            let mut v = d.json();
+            v["declaration"] = json!(k);
+            v["cases"] = json!(run.tally.by_declaration.get(&k).copied().unwrap_or(0));
+            v
+        })
+        .collect();
+    json!({
+        "level": run.level.name(),
+        "declared": declared,
+        "unused": run.unused_deviations(),
+        "note": "a case that deviates as declared is not compared past its first divergence",
+    })
+}
+
 /// The whole evidence document.
 pub fn document(run: &Run, rows: &[Row]) -> Value {
     let by_cycle: BTreeMap<&str, Value> = run
         .by_cycle()
         .into_iter()
-        .map(|(c, [n, ok, div, fail])| {
-            let counts = json!({ "name": c.name(), "counts": c.describe(), "cases": n, "conform": ok, "diverge": div, "fail": fail });
+        .map(|(c, [n, ok, dev, div, fail])| {
+            let counts = json!({ "name": c.name(), "counts": c.describe(), "cases": n, "conform": ok, "deviate": dev, "diverge": div, "fail": fail });
             (c.label(), counts)
         })
         .collect();
@@ -139,6 +161,7 @@ pub fn document(run: &Run, rows: &[Row]) -> Value {
             "max_output_bytes": run.candidate_argv.as_ref().map(|_| run.options.limits.max_output),
             "max_failures": run.candidate_argv.as_ref().map(|_| run.options.max_failures),
             "process_starts": run.candidate_argv.as_ref().map(|_| run.candidate_starts),
+            "level": run.level.name(),
         },
         "parameters": {
             "cycles": run.options.cycle_names(),
@@ -147,13 +170,20 @@ pub fn document(run: &Run, rows: &[Row]) -> Value {
             "shard": run.options.shard.map(|s| s.to_string()),
             "shrink_steps": SHRINK_STEPS,
             "max_minimized_groups": MAX_MINIMIZED,
+            "level": run.options.level.map(|l| l.name()),
+            "dialect": run.options.dialect.map(super::deviations::dialect_name),
+            "params": run.options.params,
+            "deviations": run.options.deviations.iter().map(super::deviations::Deviation::json).collect::<Vec<_>>(),
         },
         "families": run.families.iter().map(|f| json!({ "family": f.family, "seed": f.seed, "drawn": f.drawn, "kept": f.kept })).collect::<Vec<_>>(),
         "configurations": run.tally.configurations(),
         "summary": {
             "passed": run.passed(),
+            "verdict": run.verdict(),
+            "level": run.level.name(),
             "cases": run.cases(),
             "conform": run.conforming(),
+            "deviate": run.deviating(),
             "diverge": run.diverging(),
             "fail": run.failures(),
             "divergence_groups": run.groups.len(),
@@ -171,6 +201,7 @@ pub fn document(run: &Run, rows: &[Row]) -> Value {
         "by_rule": by_rule,
         "failures": failures(run),
         "divergences": groups(run),
+        "deviations": deviations(run),
         "cases": { "file": "cases.jsonl", "count": run.cases() },
         "matrix": matrix_json(rows),
         "merged_from": run.merged_from,

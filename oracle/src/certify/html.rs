@@ -74,11 +74,14 @@ code { font-size: 12px; }
 }
 ";
 
-fn verdict_badge(passed: bool) -> &'static str {
-    if passed {
-        r#"<span class="verdict pass">PASS — every case conforms</span>"#
-    } else {
-        r#"<span class="verdict fail">FAIL — divergences or candidate failures</span>"#
+/// The verdict as [`Run::verdict`] words it: plain PASS only for a full comparison in which
+/// every case conforms.
+fn verdict_badge(run: &Run) -> String {
+    let verdict = escape(&run.verdict());
+    match (run.passed(), run.deviating() > 0) {
+        (true, false) => format!(r#"<span class="verdict pass">{verdict} — every case conforms</span>"#),
+        (true, true) => format!(r#"<span class="verdict pass">{verdict} — every other case conforms</span>"#),
+        (false, _) => format!(r#"<span class="verdict fail">{verdict} — divergences or candidate failures</span>"#),
     }
 }
 
@@ -196,7 +199,8 @@ fn summary(run: &Run, out: &mut String) {
         ),
         None => "the production expander <code>cycle-impl</code>".to_string(),
     };
-    let _ = writeln!(out, "<p>{}</p>", verdict_badge(run.passed()));
+    let _ = writeln!(out, "<p>{}</p>", verdict_badge(run));
+    super::verdict::html(run, out);
     if let Some(st) = run.stopped {
         let _ = writeln!(
             out,
@@ -212,7 +216,7 @@ fn summary(run: &Run, out: &mut String) {
         out,
         "<table><tr><th>reference</th><td>the executable spec <code>cycle-spec</code></td></tr>\
          <tr><th>candidate</th><td>{candidate}</td></tr>\
-         <tr><th>cases</th><td>{} ({} conform, {} diverge, {} fail)</td></tr>\
+         <tr><th>cases</th><td>{} ({} conform, {} deviate as declared, {} diverge, {} fail)</td></tr>\
          <tr><th>cycles</th><td>{}</td></tr>\
          <tr><th>generated cases per family</th><td>{} (garbage: a fifth), seed {}</td></tr>\
          <tr><th>families</th><td>{}</td></tr>\
@@ -220,6 +224,7 @@ fn summary(run: &Run, out: &mut String) {
          <tr><th>documents compiled in</th><td>cyclecheck {}; docs/RULES.md {}; docs/INTERPRETATION.md {}</td></tr></table>",
         run.cases(),
         run.conforming(),
+        run.deviating(),
         run.diverging(),
         run.failures(),
         escape(&run.options.cycles.iter().map(|f| f.name).collect::<Vec<_>>().join(", ")),
@@ -237,11 +242,11 @@ fn summary(run: &Run, out: &mut String) {
         fingerprint(RULES_MD),
         fingerprint(INTERPRETATION_MD),
     );
-    out.push_str("<table><tr><th>cycle run</th><th>counts the cases where</th><th>cases</th><th>conform</th><th>diverge</th><th>fail</th></tr>\n");
-    for (cycle, [n, ok, div, fail]) in run.by_cycle() {
+    out.push_str("<table><tr><th>cycle run</th><th>counts the cases where</th><th>cases</th><th>conform</th><th>deviate as declared</th><th>diverge</th><th>fail</th></tr>\n");
+    for (cycle, [n, ok, dev, div, fail]) in run.by_cycle() {
         let _ = writeln!(
             out,
-            r#"<tr><td>{}</td><td>{}</td><td class="num">{n}</td><td class="num">{ok}</td><td class="num">{div}</td><td class="num">{fail}</td></tr>"#,
+            r#"<tr><td>{}</td><td>{}</td><td class="num">{n}</td><td class="num">{ok}</td><td class="num">{dev}</td><td class="num">{div}</td><td class="num">{fail}</td></tr>"#,
             escape(cycle.label()),
             escape(&cycle.describe())
         );
@@ -251,7 +256,8 @@ fn summary(run: &Run, out: &mut String) {
 
 fn divergences(run: &Run, out: &mut String) {
     if run.groups.is_empty() && run.failures() == 0 {
-        out.push_str("<p>None: every case conforms.</p>\n");
+        let deviate = if run.deviating() > 0 { " (the cases that deviate as declared aside, listed above)" } else { "" };
+        let _ = writeln!(out, "<p>None: every case conforms{deviate}.</p>");
         return;
     }
     for (g, group) in run.groups.iter().enumerate() {

@@ -97,6 +97,7 @@ fn minimize(engine: &dyn Engine, record: &CaseRecord, pending: &mut Pending, sig
         method: "line deletion",
         steps: 0,
     };
+    let params = pending.params;
     if let Some(tree) = pending.tree.as_mut() {
         // proptest's shrinking: simplify while the case fails, complicate when it passes.
         best.method = "proptest shrinking, line deletion";
@@ -108,11 +109,13 @@ fn minimize(engine: &dyn Engine, record: &CaseRecord, pending: &mut Pending, sig
             }
             best.steps += 1;
             let case = tree.current();
-            match diverges_as(engine, &case.program, &case.config, sig) {
+            let mut config = case.config;
+            super::set_params(&params, &mut config);
+            match diverges_as(engine, &case.program, &config, sig) {
                 Some(d) => {
                     failing = true;
                     best.program = case.program;
-                    best.config = case.config;
+                    best.config = config;
                     best.divergence = d;
                 }
                 None => failing = false,

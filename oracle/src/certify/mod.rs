@@ -25,6 +25,7 @@
 
 pub mod bundle;
 pub mod cases;
+pub mod deviations;
 pub mod evidence;
 pub mod html;
 pub mod identity;
@@ -37,19 +38,21 @@ pub mod plot;
 pub mod proofs;
 pub mod shard;
 pub mod tally;
+mod verdict;
 
 pub use crate::judge::CaseResult;
 pub use cases::FamilyRun;
 pub use minimize::{Group, Minimized, Signature};
+pub use verdict::{declared_level, level_refusal};
 
 use crate::candidate::{CandidateEngine, Limits};
-use crate::conformance;
+use crate::conformance::{self, Level};
 use crate::corpus;
 use crate::engine::{Engine, FailureKind, ImplEngine, SpecEngine};
 use crate::judge::{judge, judge_keeping, Judged};
 use crate::registry::{self, CycleRun, Family, FAMILIES};
 use cycle_vocab::text::Trace;
-use cycle_vocab::{Config, Rule};
+use cycle_vocab::{Config, Dialect, Params, Rule};
 use std::collections::{BTreeMap, BTreeSet};
 use std::io::Write;
 use std::time::{Duration, Instant};
@@ -92,6 +95,17 @@ pub struct Options {
     pub kani_log: Option<kani::KaniLog>,
     /// The slice of the run to judge (`--shard K/N`); `None`: every case.
     pub shard: Option<shard::Shard>,
+    /// The declared deviations (`--deviations`): a case whose first divergence matches one
+    /// deviates as declared ([`CaseResult::Deviate`]).
+    pub deviations: Vec<deviations::Deviation>,
+    /// The comparison level the run requires (`--level`): a candidate that declares a weaker
+    /// one does not pass. `None`: whatever it declares.
+    pub level: Option<Level>,
+    /// Only the cases under this dialect (a third-party campaign's `dialect`); `None`: all.
+    pub dialect: Option<Dialect>,
+    /// Parameters set in every case's configuration, over the generator's (a campaign's
+    /// `params`); those left `None` stay as drawn.
+    pub params: Params,
 }
 
 impl Default for Options {
@@ -106,6 +120,10 @@ impl Default for Options {
             max_failures: DEFAULT_MAX_FAILURES,
             kani_log: None,
             shard: None,
+            deviations: Vec::new(),
+            level: None,
+            dialect: None,
+            params: Params::default(),
         }
     }
 }
@@ -136,9 +154,23 @@ impl Options {
         self.cycles.iter().map(|f| f.name).chain(self.operator.then_some(OPERATOR)).collect()
     }
 
+    /// `config` with the run's parameters set over its own ([`Options::params`]).
+    pub fn configure(&self, config: &mut Config) {
+        set_params(&self.params, config);
+    }
+
     /// Whether a case that runs `run` is in the run: with every family covered, any case is.
     pub fn covers(&self, run: CycleRun) -> bool {
         self.all_cycles() || matches!(run, CycleRun::Family(f) if self.cycles.contains(&f))
+    }
+}
+
+/// `config` with every parameter `over` sets set over its own.
+pub fn set_params(over: &Params, config: &mut Config) {
+    for name in Params::NAMES {
+        if let Some(v) = over.get(name) {
+            let _ = config.params.set(name, v);
+        }
     }
 }
 
@@ -224,6 +256,8 @@ pub struct Run {
     pub duration: Duration,
     /// The shards a merged bundle was joined from (empty for a run).
     pub merged_from: Vec<shard::ShardRun>,
+    /// The comparison level the candidate declared (the weakest of its children's).
+    pub level: Level,
 }
 
 impl Run {
@@ -243,9 +277,10 @@ impl Run {
         self.tally.fail
     }
 
-    /// Whether every case conformed and the run was not stopped.
+    /// Whether every case conformed or deviated as declared, the run was not stopped, and the
+    /// candidate's level is the one asked for (if any). [`Run::verdict`] says at which level.
     pub fn passed(&self) -> bool {
-        self.conforming() == self.cases() && self.stopped.is_none()
+        self.conforming() + self.tally.deviate == self.cases() && self.stopped.is_none() && self.level_ok()
     }
 
     /// Failures by kind.
@@ -253,8 +288,8 @@ impl Run {
         self.tally.failures_by_kind.clone()
     }
 
-    /// Per cycle run: cases, conform, diverge, fail.
-    pub fn by_cycle(&self) -> BTreeMap<CycleRun, [usize; 4]> {
+    /// Per cycle run: cases, conform, deviate as declared, diverge, fail.
+    pub fn by_cycle(&self) -> BTreeMap<CycleRun, [usize; 5]> {
         self.tally.by_cycle.clone()
     }
 
@@ -279,22 +314,25 @@ impl Run {
     /// and each failure kind with its first case.
     pub fn summary(&self) -> String {
         let mut s = format!(
-            "spec vs {}: {} cases, {} conform, {} diverge, {} fail ({:.1} s)\n",
+            "spec vs {} at comparison level {}: {} cases, {} conform, {} deviate as declared, {} diverge, {} fail ({:.1} s)\n",
             self.candidate,
+            self.level,
             self.cases(),
             self.conforming(),
+            self.tally.deviate,
             self.diverging(),
             self.failures(),
             self.duration.as_secs_f64()
         );
+        s.push_str(&self.level_and_deviation_lines());
         if let Some(st) = self.stopped {
             s.push_str(&format!(
                 "STOPPED after {} consecutive candidate failures (--max-failures): {} of at most {} cases judged\n",
                 st.consecutive_failures, st.judged, st.planned
             ));
         }
-        for (cycle, [n, ok, div, fail]) in self.by_cycle() {
-            s.push_str(&format!("  {:<20} {n:>6} cases  {ok:>6} conform  {div:>5} diverge  {fail:>5} fail\n", cycle.label()));
+        for (cycle, [n, ok, dev, div, fail]) in self.by_cycle() {
+            s.push_str(&format!("  {:<20} {n:>6} cases  {ok:>6} conform  {dev:>5} deviate  {div:>5} diverge  {fail:>5} fail\n", cycle.label()));
         }
         for g in &self.groups {
             s.push_str(&format!("\n{} case(s) diverge like {}:\n", g.count, g.first.name));
@@ -359,6 +397,7 @@ pub fn run(options: &Options, cases_out: &mut dyn Write, progress: &mut dyn FnMu
     };
     let mut run = run_engine(options, engine, argv, cases_out, progress)?;
     run.candidate_starts = candidate.as_ref().map_or(0, CandidateEngine::starts);
+    run.level = candidate.as_ref().map_or(Level::Full, CandidateEngine::weakest_level);
     Ok(run)
 }
 
@@ -386,7 +425,7 @@ pub fn run_engine(
             progress(Progress { phase, done: cases.cases.drawn - cases.waiting() - 1, total: cases.cases.total, bad: tally.cases - tally.conform });
         }
         let judged = if in_corpus { judge_keeping(&SpecEngine, engine, &p.program, &p.config) } else { judge(&SpecEngine, engine, &p.program, &p.config) };
-        let record = CaseRecord::new(&p, judged);
+        let record = verdict::deviate(&options.deviations, CaseRecord::new(&p, judged));
         tally.add(&record);
         let group = minimize::add(&mut groups, &record, Some(p));
         writeln!(cases_out, "{}", tally::case_line(&record, group)).map_err(write_error)?;
@@ -424,6 +463,7 @@ pub fn run_engine(
         },
         duration: started.elapsed(),
         merged_from: Vec::new(),
+        level: engine.level(),
     })
 }
 

@@ -16,10 +16,14 @@ use std::collections::BTreeMap;
 pub struct Tally {
     pub cases: usize,
     pub conform: usize,
+    /// Cases whose first divergence is a declared deviation ([`CaseResult::Deviate`]).
+    pub deviate: usize,
     pub diverge: usize,
     pub fail: usize,
-    /// Per cycle run: cases, conform, diverge, fail.
-    pub by_cycle: BTreeMap<CycleRun, [usize; 4]>,
+    /// Per cycle run: cases, conform, deviate as declared, diverge, fail.
+    pub by_cycle: BTreeMap<CycleRun, [usize; 5]>,
+    /// Per declared deviation (its index): the cases that deviate so.
+    pub by_declaration: BTreeMap<usize, usize>,
     /// Per rule: cases whose reference trace carries it, divergences that name it.
     pub by_rule: BTreeMap<Rule, (usize, usize)>,
     pub failures_by_kind: BTreeMap<FailureKind, usize>,
@@ -42,16 +46,21 @@ impl Tally {
                 self.conform += 1;
                 c[1] += 1;
             }
+            CaseResult::Deviate { declaration, .. } => {
+                self.deviate += 1;
+                c[2] += 1;
+                *self.by_declaration.entry(*declaration).or_default() += 1;
+            }
             CaseResult::Diverge(d) => {
                 self.diverge += 1;
-                c[2] += 1;
+                c[3] += 1;
                 if let Some(rule) = d.rule {
                     self.by_rule.entry(rule).or_default().1 += 1;
                 }
             }
             CaseResult::Failure { failure, .. } => {
                 self.fail += 1;
-                c[3] += 1;
+                c[4] += 1;
                 *self.failures_by_kind.entry(failure.kind).or_default() += 1;
             }
         }
@@ -98,6 +107,9 @@ fn result(r: &CaseResult) -> Value {
     match r {
         CaseResult::Conform => json!({ "result": "conform" }),
         CaseResult::Diverge(d) => json!({ "result": "diverge", "divergence": conformance::to_json(d) }),
+        CaseResult::Deviate { divergence, declaration } => {
+            json!({ "result": "deviate", "declaration": declaration, "divergence": conformance::to_json(divergence) })
+        }
         CaseResult::Failure { engine, failure } => json!({
             "result": "fail",
             "engine": engine,

@@ -7,7 +7,7 @@
 //!
 //! [`check`] is the same comparison of two whole traces.
 
-use super::{alarm_field, dwell_field, grid_name, move_field, pass_field, press_field, spindle_field, stop_field, variant, Divergence, DivergenceKind, CONTEXT, END};
+use super::{alarm_field, Level, dwell_field, grid_name, move_field, pass_field, press_field, spindle_field, stop_field, variant, Divergence, DivergenceKind, CONTEXT, END};
 use cycle_vocab::text::Trace;
 use cycle_vocab::{Alarm, Event, Grid, Rule};
 use std::collections::VecDeque;
@@ -38,6 +38,9 @@ pub struct Lockstep<I> {
     /// The last reference events, with their indices.
     recent: VecDeque<(usize, Event)>,
     first: Option<Divergence>,
+    /// What is compared ([`Level`]): events the level does not compare are dropped from both
+    /// traces before they are indexed.
+    level: Level,
 }
 
 /// One step of the candidate's stream.
@@ -58,12 +61,19 @@ impl<I: Iterator<Item = Result<Event, Alarm>>> Lockstep<I> {
             candidate_end: None,
             recent: VecDeque::with_capacity(CONTEXT),
             first: None,
+            level: Level::Full,
         };
         if reference_grid != candidate_grid {
             let (r, c) = (grid_name(reference_grid), grid_name(candidate_grid));
             l.found(0, DivergenceKind::GridMismatch, Some("grid"), r, c, None, Some(Rule::ComUnits));
         }
         l
+    }
+
+    /// The comparison at `level` ([`Level::Full`] unless set).
+    pub fn at_level(mut self, level: Level) -> Lockstep<I> {
+        self.level = level;
+        self
     }
 
     /// Whether a divergence has been found.
@@ -75,13 +85,16 @@ impl<I: Iterator<Item = Result<Event, Alarm>>> Lockstep<I> {
         if let Some(end) = self.candidate_end {
             return Next::End(end);
         }
-        match self.candidate.next() {
-            Some(Ok(e)) => {
-                self.read += 1;
-                Next::Event(e)
+        loop {
+            match self.candidate.next() {
+                Some(Ok(e)) if !self.level.compares(&e) => {}
+                Some(Ok(e)) => {
+                    self.read += 1;
+                    return Next::Event(e);
+                }
+                Some(Err(a)) => return self.end(Some(a)),
+                None => return self.end(None),
             }
-            Some(Err(a)) => self.end(Some(a)),
-            None => self.end(None),
         }
     }
 
@@ -118,11 +131,15 @@ impl<I: Iterator<Item = Result<Event, Alarm>>> Lockstep<I> {
             context,
             lengths: (0, 0),
             alarms: (None, None),
+            level: self.level,
         });
     }
 
     /// The reference's next event.
     pub fn reference(&mut self, r: Event) {
+        if !self.level.compares(&r) {
+            return;
+        }
         if self.first.is_none() {
             self.compare(r);
         }
@@ -184,7 +201,13 @@ impl<I: Iterator<Item = Result<Event, Alarm>>> Lockstep<I> {
             (Next::Event(c), None) => self.found(n, DivergenceKind::ExtraEvents, None, END.to_string(), self.line(&c), None, None),
             (Next::End(None), None) => {}
             (Next::End(Some(ca)), Some(ra)) => {
-                if let Some((field, rv, cv)) = alarm_field(&ra, &ca) {
+                let differs = match self.level {
+                    Level::Full => alarm_field(&ra, &ca),
+                    // The code only: word, line and rule are not compared.
+                    Level::Motion => alarm_field(&ra, &ca).filter(|(field, ..)| *field == "code"),
+                    Level::MotionAlarmPresence => None,
+                };
+                if let Some((field, rv, cv)) = differs {
                     self.found(n, DivergenceKind::AlarmMismatch, Some(field), alarm_line(&ra), alarm_line(&ca), Some((rv, cv)), Some(ra.rule));
                 }
             }

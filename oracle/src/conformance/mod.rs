@@ -39,7 +39,9 @@ use crate::catalogue;
 use cycle_vocab::{Alarm, AlarmCode, Dwell, Event, Grid, Move, MoveKind, Pass, Press, Rule, Spindle, Stop};
 use std::fmt;
 
+mod level;
 mod lockstep;
+pub use level::Level;
 pub use lockstep::{check, Lockstep};
 
 /// How many events before the divergence the report shows.
@@ -123,6 +125,9 @@ pub struct Divergence {
     pub lengths: (usize, usize),
     /// Alarm lines of the reference and the candidate, if they end in one.
     pub alarms: (Option<String>, Option<String>),
+    /// The comparison level ([`Level`]): below `full`, `index`, `context` and `lengths` count
+    /// the events the level compares (the moves), not the whole traces'.
+    pub level: Level,
 }
 
 /// How the end of a trace without an alarm is shown.
@@ -256,6 +261,9 @@ pub fn alarm_short(alarm: &Alarm) -> String {
 impl fmt::Display for Divergence {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "DIVERGENCE: {} at event {}", self.kind, self.index)?;
+        if self.level != Level::Full {
+            write!(f, " of the moves-only traces (comparison level {}: other events dropped from both before indexing)", self.level)?;
+        }
         if let Some(field) = self.field {
             write!(f, ", field `{field}`")?;
         }
@@ -278,9 +286,10 @@ impl fmt::Display for Divergence {
             },
             None => writeln!(f, "  rule: none (the reference has no event here)")?,
         }
+        let unit = if self.level == Level::Full { "events" } else { "moves" };
         let ending = |n: usize, alarm: &Option<String>| match alarm {
-            Some(a) => format!("{n} events, then {a}"),
-            None => format!("{n} events, no alarm"),
+            Some(a) => format!("{n} {unit}, then {a}"),
+            None => format!("{n} {unit}, no alarm"),
         };
         writeln!(f, "  reference trace: {}", ending(self.lengths.0, &self.alarms.0))?;
         writeln!(f, "  candidate trace: {}", ending(self.lengths.1, &self.alarms.1))?;
@@ -314,6 +323,7 @@ pub fn to_json(d: &Divergence) -> serde_json::Value {
         "context": d.context.iter().map(|(i, l)| serde_json::json!({"index": i, "line": l})).collect::<Vec<_>>(),
         "lengths": {"reference": d.lengths.0, "candidate": d.lengths.1},
         "alarms": {"reference": d.alarms.0, "candidate": d.alarms.1},
+        "level": d.level.name(),
     })
 }
 

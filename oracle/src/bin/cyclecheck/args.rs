@@ -4,6 +4,7 @@
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use cycle_oracle::candidate::Limits;
 use cycle_oracle::certify::{self, identity::LONG_VERSION, shard::Shard};
+use cycle_oracle::conformance::Level;
 use cycle_oracle::{gate, nightly, registry};
 use cycle_vocab::{Config, Dialect, Increment, Units};
 use std::path::PathBuf;
@@ -243,6 +244,12 @@ pub struct CertifyArgs {
     /// Judge only shard K of N: case i of the corpus and of each family goes to shard i mod N + 1 (merge the shards' bundles with cyclecheck merge).
     #[arg(long, value_name = "K/N", value_parser = shard)]
     pub shard: Option<Shard>,
+    /// Declared deviations (TOML, [[deviation]] rule, family, dialect, field, reason): a case whose first divergence matches one deviates as declared, never conforms (docs/CANDIDATE.md).
+    #[arg(long, value_name = "FILE")]
+    pub deviations: Option<PathBuf>,
+    /// Require this comparison level (full, motion, motion-alarm-presence): a candidate whose greeting declares a weaker one fails before the run (exit 1).
+    #[arg(long, value_name = "LEVEL", value_parser = Level::parse)]
+    pub level: Option<Level>,
 }
 
 fn shard(text: &str) -> Result<Shard, String> {

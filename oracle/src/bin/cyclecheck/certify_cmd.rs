@@ -32,9 +32,21 @@ pub fn run(a: &CertifyArgs) -> Result<u8, Bad> {
         max_failures: a.max_failures,
         kani_log,
         shard: a.shard,
+        deviations: match &a.deviations {
+            None => Vec::new(),
+            Some(f) => certify::deviations::read(f).map_err(|e| Bad(format!("--deviations {e}")))?,
+        },
+        level: a.level,
+        ..certify::Options::default()
     };
     if let Some(cmd) = &options.candidate {
         split_command(cmd).map_err(|e| Bad(format!("--candidate {cmd:?}: {e}")))?;
+    }
+    if let Some(required) = a.level {
+        if let Some(refused) = level_refused(options.candidate.as_deref(), options.limits, required) {
+            crate::expand::emit(&format!("FAIL: {refused}\n"));
+            return Ok(1);
+        }
     }
     let out = &a.out;
     let staging = Staging::create(out).map_err(|e| Bad(format!("--out {}: {e}", out.display())))?;
@@ -52,9 +64,22 @@ pub fn run(a: &CertifyArgs) -> Result<u8, Bad> {
     Ok(report(&run, files.iter().filter(|(f, _)| f.starts_with("plots/")).count(), out))
 }
 
+/// Why `--level required` refuses the candidate before the run: it declares a weaker level in
+/// its greeting (or cannot be greeted). The production expander compares at `full`.
+fn level_refused(candidate: Option<&str>, limits: cycle_oracle::candidate::Limits, required: cycle_oracle::conformance::Level) -> Option<String> {
+    let declared = match candidate {
+        None => cycle_oracle::conformance::Level::Full,
+        Some(cmd) => match certify::declared_level(cmd, limits) {
+            Ok(l) => l,
+            Err(e) => return Some(format!("--level {required}: the candidate could not be greeted: {e}")),
+        },
+    };
+    (declared < required).then(|| certify::level_refusal(declared, required))
+}
+
 /// Prints the summary and what was written; the exit code.
 fn report(run: &certify::Run, plots: usize, out: &std::path::Path) -> u8 {
-    let verdict = if run.passed() { "PASS" } else { "FAIL" };
+    let verdict = run.verdict();
     let shard = match (run.options.shard, run.merged_from.len()) {
         (Some(s), _) => format!(" (shard {s}: merge the shards with cyclecheck merge)"),
         (None, 0) => String::new(),

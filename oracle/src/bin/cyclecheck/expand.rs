@@ -6,7 +6,7 @@ use crate::args::{DiffArgs, EngineArg, ExpandArgs, FormatArg};
 use crate::config::{check_files, config, read_program};
 use crate::output::{Form, TraceWriter};
 use crate::Bad;
-use cycle_oracle::conformance::{self, alarm_summary};
+use cycle_oracle::conformance::{self, alarm_summary, Level};
 use cycle_oracle::engine::{Engine, FailureKind, ImplEngine, SpecEngine};
 use cycle_oracle::judge::{self, CaseResult};
 use cycle_oracle::{hint, registry};
@@ -74,8 +74,11 @@ pub fn diff(a: &DiffArgs) -> Result<u8, Bad> {
             out.push_str(&format!("== {file} ({})\n", cycle.label()));
         }
         let hint = alarm.and_then(|a| hint::hint(&program, &config, &a));
+        // The level the candidate declared in its greeting (full for the production expander).
+        let level = candidate.level();
         let mut doc = match &j.result {
-            CaseResult::Diverge(d) => {
+            // No declarations in diff: a deviation cannot be declared here.
+            CaseResult::Diverge(d) | CaseResult::Deviate { divergence: d, .. } => {
                 out.push_str(&format!("{d}\n"));
                 serde_json::json!({"conform": false, "divergence": conformance::to_json(d)})
             }
@@ -89,9 +92,13 @@ pub fn diff(a: &DiffArgs) -> Result<u8, Bad> {
             }
             CaseResult::Conform => {
                 let events = j.reference.as_ref().map_or(0, |r| r.events);
+                let conform = match level {
+                    Level::Full => "conform".to_string(),
+                    l => format!("conform at comparison level {l} ({})", l.describe()),
+                };
                 match &alarm {
-                    None => out.push_str(&format!("conform: {events} events\n")),
-                    Some(a) => out.push_str(&format!("conform: {events} events, then {}\n", Trace::alarm_line(a))),
+                    None => out.push_str(&format!("{conform}: {events} events\n")),
+                    Some(a) => out.push_str(&format!("{conform}: {events} events, then {}\n", Trace::alarm_line(a))),
                 }
                 serde_json::json!({"conform": true, "events": events, "alarm": alarm})
             }
@@ -102,6 +109,7 @@ pub fn diff(a: &DiffArgs) -> Result<u8, Bad> {
                 doc["file"] = serde_json::json!(file);
             }
             doc["cycle"] = serde_json::json!(cycle.label());
+            doc["level"] = serde_json::json!(level.name());
             if let Some(h) = &hint {
                 doc["hint"] = serde_json::json!(h);
             }

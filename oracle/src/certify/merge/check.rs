@@ -16,7 +16,7 @@ pub struct ShardBundle {
 }
 
 /// What must be equal in every shard, as (what it is, JSON pointer into `evidence.json`).
-const SAME: [(&str, &str); 9] = [
+const SAME: [(&str, &str); 10] = [
     ("the cyclecheck build", "/identity/build"),
     ("the cyclecheck build", "/tool"),
     ("the candidate (command, executable and file hashes)", "/identity/candidate"),
@@ -25,6 +25,7 @@ const SAME: [(&str, &str); 9] = [
     ("the candidate options", "/candidate/timeout_ms"),
     ("the candidate options", "/candidate/max_output_bytes"),
     ("the candidate options", "/candidate/max_failures"),
+    ("the comparison level the candidate declared", "/candidate/level"),
     ("the documents compiled in (docs/RULES.md, docs/INTERPRETATION.md)", "/documents"),
 ];
 

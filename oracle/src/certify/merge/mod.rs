@@ -113,6 +113,13 @@ fn options(doc: &Value, kani_log: Option<kani::KaniLog>) -> Result<Options, Stri
         max_failures: c["max_failures"].as_u64().map_or(defaults.max_failures, |n| n as u32),
         kani_log,
         shard: None,
+        deviations: p["deviations"].as_array().into_iter().flatten().map(super::deviations::Deviation::from_json).collect::<Result<_, _>>()?,
+        level: p["level"].as_str().map(crate::conformance::Level::parse).transpose()?,
+        dialect: match p["dialect"].as_str() {
+            None => None,
+            Some(d) => Some(super::deviations::dialect(d).ok_or_else(|| format!("parameters.dialect: unknown dialect {d:?}"))?),
+        },
+        params: serde_json::from_value(p["params"].clone()).unwrap_or_default(),
     })
 }
 
@@ -243,6 +250,7 @@ pub fn merge(request: &Request) -> Result<Run, String> {
         proofs: proofs::Proofs::check(options.kani_log.clone()),
         duration: Duration::from_secs_f64(duration),
         merged_from,
+        level: first["candidate"]["level"].as_str().map_or(Ok(crate::conformance::Level::Full), crate::conformance::Level::parse)?,
         options,
     };
     let mut plot_error = None;

@@ -4,7 +4,7 @@
 
 use super::super::cases::FamilyRun;
 use super::super::{CaseRecord, Minimized, Origin};
-use crate::conformance::{Divergence, DivergenceKind};
+use crate::conformance::{Divergence, DivergenceKind, Level};
 use crate::corpus;
 use crate::engine::{Failure, FailureKind};
 use crate::judge::CaseResult;
@@ -81,6 +81,7 @@ pub fn divergence(v: &Value) -> Result<Divergence, String> {
         context,
         lengths: (usize_of(&v["lengths"], "reference")?, usize_of(&v["lengths"], "candidate")?),
         alarms: (opt_string(&v["alarms"]["reference"]), opt_string(&v["alarms"]["candidate"])),
+        level: v["level"].as_str().map_or(Ok(Level::Full), Level::parse)?,
     })
 }
 
@@ -133,6 +134,7 @@ fn result(v: &Value) -> Result<CaseResult, String> {
     match str_of(v, "result")? {
         "conform" => Ok(CaseResult::Conform),
         "diverge" => Ok(CaseResult::Diverge(Box::new(divergence(&v["divergence"])?))),
+        "deviate" => Ok(CaseResult::Deviate { divergence: Box::new(divergence(&v["divergence"])?), declaration: usize_of(v, "declaration")? }),
         "fail" => {
             let kind_name = str_of(v, "kind")?;
             let kind = FAILURE_KINDS.into_iter().find(|k| k.name() == kind_name).ok_or_else(|| format!("unknown failure kind {kind_name:?}"))?;
