@@ -92,6 +92,9 @@ def load_ncplot():
         leads.clear()
         feeds.clear()
         state = CNCState(machine_config=get_machine_config("FANUC_TURN"))
+        # One plot point per move: ncplot7py's own override of its 0.5 mm interpolation step
+        # (the end points, all a trace carries, do not depend on it).
+        state.extra["max_segment"] = 1e9
         control = UniversalConfigDrivenControl(init_nc_states=[state])
         engine = NCExecutionEngine(control)
         with contextlib.redirect_stdout(sys.stderr):
