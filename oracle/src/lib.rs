@@ -31,6 +31,7 @@ pub mod operator;
 pub mod reaper;
 pub mod readback;
 pub mod registry;
+pub mod thirdparty;
 
 pub use conformance::{check, Divergence, DivergenceKind};
 pub use engine::{Engine, ImplEngine, SpecEngine};

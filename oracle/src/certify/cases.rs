@@ -23,8 +23,10 @@ pub struct Pending {
     pub program: Vec<u8>,
     pub config: Config,
     pub tree: Option<Box<dyn ValueTree<Value = Case>>>,
-    /// The run's parameters, set over every configuration the tree yields ([`Options::params`]).
+    /// The run's dialect and parameters, set over every configuration the tree yields
+    /// ([`Options::configure`]).
     pub params: cycle_vocab::Params,
+    pub dialect: Option<cycle_vocab::Dialect>,
 }
 
 
@@ -75,9 +77,6 @@ fn generators(options: &Options) -> Vec<Generator> {
 /// Whether the run covers a case: always with every family; else when the case runs a covered
 /// family (the reference run once more, for its alarm line).
 fn covered(options: &Options, program: &[u8], config: &Config) -> bool {
-    if options.dialect.is_some_and(|d| d != config.dialect) {
-        return false;
-    }
     if options.all_cycles() {
         return true;
     }
@@ -113,7 +112,7 @@ impl<'o> Cases<'o> {
             self.options.configure(&mut config);
             if Shard::includes(self.options.shard, i) && covered(self.options, p.text.as_bytes(), &config) {
                 let (name, origin) = (p.name.to_string(), Origin::Corpus { path: p.path });
-                return Some(Pending { name, origin, program: p.text.as_bytes().to_vec(), config, tree: None, params: self.options.params });
+                return Some(Pending { name, origin, program: p.text.as_bytes().to_vec(), config, tree: None, params: self.options.params, dialect: self.options.dialect });
             }
         }
         None
@@ -151,8 +150,8 @@ impl<'o> Cases<'o> {
             }
             let family = g.family;
             let origin = Origin::Generated { family, index: i };
-            let params = self.options.params;
-            return Some(Pending { name: format!("{family}#{i}"), origin, program: case.program, config: case.config, tree: Some(tree), params });
+            let (params, dialect) = (self.options.params, self.options.dialect);
+            return Some(Pending { name: format!("{family}#{i}"), origin, program: case.program, config: case.config, tree: Some(tree), params, dialect });
         }
     }
 }

@@ -97,7 +97,7 @@ fn minimize(engine: &dyn Engine, record: &CaseRecord, pending: &mut Pending, sig
         method: "line deletion",
         steps: 0,
     };
-    let params = pending.params;
+    let (params, dialect) = (pending.params, pending.dialect);
     if let Some(tree) = pending.tree.as_mut() {
         // proptest's shrinking: simplify while the case fails, complicate when it passes.
         best.method = "proptest shrinking, line deletion";
@@ -110,6 +110,7 @@ fn minimize(engine: &dyn Engine, record: &CaseRecord, pending: &mut Pending, sig
             best.steps += 1;
             let case = tree.current();
             let mut config = case.config;
+            config.dialect = dialect.unwrap_or(config.dialect);
             super::set_params(&params, &mut config);
             match diverges_as(engine, &case.program, &config, sig) {
                 Some(d) => {

@@ -101,7 +101,8 @@ pub struct Options {
     /// The comparison level the run requires (`--level`): a candidate that declares a weaker
     /// one does not pass. `None`: whatever it declares.
     pub level: Option<Level>,
-    /// Only the cases under this dialect (a third-party campaign's `dialect`); `None`: all.
+    /// Every case's dialect, over the generator's (a third-party campaign's `dialect`: both
+    /// engines expand each program under it); `None`: as drawn.
     pub dialect: Option<Dialect>,
     /// Parameters set in every case's configuration, over the generator's (a campaign's
     /// `params`); those left `None` stay as drawn.
@@ -154,8 +155,12 @@ impl Options {
         self.cycles.iter().map(|f| f.name).chain(self.operator.then_some(OPERATOR)).collect()
     }
 
-    /// `config` with the run's parameters set over its own ([`Options::params`]).
+    /// `config` with the run's dialect and parameters set over its own ([`Options::dialect`],
+    /// [`Options::params`]).
     pub fn configure(&self, config: &mut Config) {
+        if let Some(d) = self.dialect {
+            config.dialect = d;
+        }
         set_params(&self.params, config);
     }
 

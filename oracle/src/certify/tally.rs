@@ -11,6 +11,11 @@ use cycle_vocab::{Params, Rule};
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
 
+/// At most this many refusal messages are counted apart.
+pub const MAX_REASONS: usize = 64;
+/// Where the refusals of later messages are counted.
+pub const OTHER_REASONS: &str = "(other reasons)";
+
 /// The counts of a run.
 #[derive(Clone, Debug, Default)]
 pub struct Tally {
@@ -27,6 +32,11 @@ pub struct Tally {
     /// Per rule: cases whose reference trace carries it, divergences that name it.
     pub by_rule: BTreeMap<Rule, (usize, usize)>,
     pub failures_by_kind: BTreeMap<FailureKind, usize>,
+    /// Per cycle run: the refusals among its failures.
+    pub refused_by_cycle: BTreeMap<CycleRun, usize>,
+    /// The candidate's refusals by their message (the first [`MAX_REASONS`] messages; later
+    /// ones under [`OTHER_REASONS`]).
+    pub refusal_reasons: BTreeMap<String, usize>,
     /// Cases per dialect and per grid (`metric isb`), with parameters set, with a start point.
     pub dialect: BTreeMap<String, usize>,
     pub grid: BTreeMap<String, usize>,
@@ -62,6 +72,12 @@ impl Tally {
                 self.fail += 1;
                 c[4] += 1;
                 *self.failures_by_kind.entry(failure.kind).or_default() += 1;
+                if failure.kind == FailureKind::Refused {
+                    *self.refused_by_cycle.entry(r.cycle).or_default() += 1;
+                    let known = self.refusal_reasons.contains_key(&failure.message) || self.refusal_reasons.len() < MAX_REASONS;
+                    let reason = if known { failure.message.clone() } else { OTHER_REASONS.to_string() };
+                    *self.refusal_reasons.entry(reason).or_default() += 1;
+                }
             }
         }
         for &rule in &r.rules {

@@ -306,3 +306,44 @@ fn dwell_and_spindle_events_are_compared() {
     let d = check(&r, &with(vec![rapid(1, 2), spindle(SpindleState::Reverse), dwell(500)], None)).unwrap_err();
     assert_eq!((d.kind, d.index), (DivergenceKind::EventKindMismatch, 1));
 }
+
+/// Below `full` only moves are compared, indexed among the moves; the alarm by its code
+/// (`motion`) or by its presence (`motion-alarm-presence`).
+#[test]
+#[allow(clippy::result_large_err)]
+fn levels_compare_moves_and_less_of_the_alarm() {
+    let at = |level: Level, r: &Trace, c: &Trace| {
+        let stream = c.events.iter().copied().map(Ok).chain(c.alarm.map(Err));
+        let mut l = Lockstep::new(r.grid, c.grid, stream).at_level(level);
+        r.events.iter().for_each(|&e| l.reference(e));
+        l.finish(r.alarm)
+    };
+    let reference = with(g92().events, alarm(AlarmCode::MissingWord, b'P', Rule::G76Required, 3));
+    let mut moves_only = reference.clone();
+    moves_only.events.retain(|e| matches!(e, Event::Move(_)));
+    assert!(at(Level::Full, &reference, &moves_only).is_err(), "full compares pass headers");
+    assert_eq!(at(Level::Motion, &reference, &moves_only), Ok(()));
+    // The alarm's word, line and rule are not compared at motion; its code is.
+    let mut other_line = moves_only.clone();
+    other_line.alarm = alarm(AlarmCode::MissingWord, b'Q', Rule::PrjTrace, 9);
+    assert_eq!(at(Level::Motion, &reference, &other_line), Ok(()));
+    assert_eq!(at(Level::Full, &reference, &reference.clone()), Ok(()));
+    let mut other_code = moves_only.clone();
+    other_code.alarm = alarm(AlarmCode::OutOfRange, b'P', Rule::G76Required, 3);
+    let d = at(Level::Motion, &reference, &other_code).unwrap_err();
+    assert_eq!((d.kind, d.field, d.level), (DivergenceKind::AlarmMismatch, Some("code"), Level::Motion));
+    assert_eq!(at(Level::MotionAlarmPresence, &reference, &other_code), Ok(()));
+    let mut no_alarm = moves_only.clone();
+    no_alarm.alarm = None;
+    assert_eq!(at(Level::MotionAlarmPresence, &reference, &no_alarm).unwrap_err().kind, DivergenceKind::MissingAlarm);
+    // A move one increment off: found, indexed among the moves, and the report says so.
+    let mut off = moves_only.clone();
+    if let Event::Move(m) = &mut off.events[3] {
+        m.z += 1;
+    }
+    let d = at(Level::Motion, &reference, &off).unwrap_err();
+    assert_eq!((d.index, d.field, d.rule, d.lengths), (3, Some("z"), Some(Rule::G92Pullout), (6, 6)));
+    let text = d.to_string();
+    assert!(text.contains("at event 3 of the moves-only traces (comparison level motion") && text.contains("6 moves"), "{text}");
+    assert_eq!(crate::certify::merge::read::divergence(&to_json(&d)), Ok(d));
+}

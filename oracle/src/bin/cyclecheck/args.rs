@@ -33,6 +33,8 @@ pub enum Command {
     Certify(CertifyArgs),
     /// Join the bundles of certify --shard 1/N … N/N into the bundle of the whole run.
     Merge(MergeArgs),
+    /// Certify the third-party expanders of candidates/*/candidate.toml and write their report (docs/THIRD-PARTY.md), or --check it.
+    ThirdParty(ThirdPartyArgs),
     /// The pre-merge gate: corpus, campaign, fuzz replay, cargo test (run from the repository root).
     Gate(GateArgs),
     /// The nightly fuzz campaign with cargo-fuzz; or write the seeds; or decode a fuzz input (run from the repository root).
@@ -267,6 +269,28 @@ pub struct MergeArgs {
     /// The shards' bundles: every shard 1/N … N/N of one certify run, each once.
     #[arg(value_name = "BUNDLE", required = true)]
     pub bundles: Vec<PathBuf>,
+}
+
+#[derive(Args, Debug)]
+pub struct ThirdPartyArgs {
+    /// Where the manifests are: DIR/*/candidate.toml.
+    #[arg(long, value_name = "DIR", default_value = cycle_oracle::thirdparty::DEFAULT_CANDIDATES)]
+    pub candidates: PathBuf,
+    /// Only this candidate (repeatable); the others keep their sections of --out.
+    #[arg(long, value_name = "NAME")]
+    pub only: Vec<String>,
+    /// Only the candidates whose manifest says ci = true.
+    #[arg(long)]
+    pub ci: bool,
+    /// The report.
+    #[arg(long, value_name = "FILE", default_value = cycle_oracle::thirdparty::DEFAULT_OUT)]
+    pub out: PathBuf,
+    /// Regenerate the report in memory and compare its counts, verdicts and divergence groups with --out (exit 1 when they differ or a group has no note).
+    #[arg(long)]
+    pub check: bool,
+    /// List a candidate whose command cannot be started (or exits before the greeting) as not installed here, not as a failure.
+    #[arg(long)]
+    pub skip_missing: bool,
 }
 
 #[derive(Args, Debug)]

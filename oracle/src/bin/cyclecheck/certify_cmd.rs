@@ -3,7 +3,7 @@
 //! of the bundle and renames it into place; prints the summary. Exit 0 when every case conforms,
 //! 1 otherwise, 2 on bad options, an unusable `--out` or a failed write.
 
-use crate::args::{CertifyArgs, MergeArgs};
+use crate::args::{CertifyArgs, MergeArgs, ThirdPartyArgs};
 use crate::{bad, Bad};
 use cycle_oracle::candidate::split_command;
 use cycle_oracle::certify::{self, bundle::Staging};
@@ -100,6 +100,25 @@ pub fn merge(a: &MergeArgs) -> Result<u8, Bad> {
     let run = certify::merge::merge(&request).map_err(Bad)?;
     let plots = std::fs::read_dir(a.out.join("plots")).map_or(0, |d| d.count());
     Ok(report(&run, plots, &a.out))
+}
+
+/// `third-party`: runs the manifests' campaigns and writes the report, or compares it
+/// (`--check`); exit 0 written or up to date, 1 when the check finds a difference, 2 on a bad
+/// manifest or deviations file.
+pub fn third_party(a: &ThirdPartyArgs) -> Result<u8, Bad> {
+    let root = std::env::current_dir().map_err(|e| Bad(format!("cannot read the working directory: {e}")))?;
+    let request = cycle_oracle::thirdparty::Request {
+        candidates: a.candidates.clone(),
+        only: a.only.clone(),
+        ci: a.ci,
+        out: a.out.clone(),
+        check: a.check,
+        skip_missing: a.skip_missing,
+        root,
+    };
+    let (ok, message) = cycle_oracle::thirdparty::command(&request, &mut |line| eprintln!("{line}")).map_err(Bad)?;
+    crate::expand::emit(&message);
+    Ok(u8::from(!ok))
 }
 
 /// A progress bar on stderr: redrawn in place on a terminal, a line per phase otherwise.

@@ -44,6 +44,7 @@ fn main() -> ExitCode {
         Command::Corpus(a) => corpus_cmd::run(&a),
         Command::Certify(a) => certify_cmd::run(&a),
         Command::Merge(a) => certify_cmd::merge(&a),
+        Command::ThirdParty(a) => certify_cmd::third_party(&a),
         Command::Gate(a) => {
             let o = gate::Options {
                 cases: a.cases,
