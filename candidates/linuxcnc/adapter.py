@@ -124,7 +124,7 @@ def expand(program, cfg, cwd, worker):
     grid = cfg["grid"]
     inch = grid["units"] == "inch"
     scale = 10 ** DECIMALS[(grid["units"], grid["increment"])]
-    subs, body, line_map = translate(program, DECIMALS[(grid["units"], grid["increment"])])
+    subs, body, line_map = translate(program, DECIMALS[(grid["units"], grid["increment"])], cfg["params"])
     pre = ["G18 G7 G90 G40 G94 %s M3 S1000" % ("G20" if inch else "G21")]
     sx, sz = cfg["start_x"], cfg["start_z"]
     if (sx, sz) != (0, 0):

@@ -11,7 +11,7 @@ where the two dialects name the same thing. Returns (ngc_text, line_map) or rais
   subroutine's absolute X/Z words are shifted by them — a translation, not a computation.
 - U/W outside a G7x profile (LinuxCNC's U, W are other axes there) → X[#5420*2+u], Z[#5422+w]:
   the current position plus the increment, as the source dialect reads them.
-- G50 X Z (set the current position) → G92 X Z. N and O words are dropped (LinuxCNC reads N
+- G50 X Z (set the current position) → G92 X Z. N, O and T words are dropped (LinuxCNC reads N
   only at a line's start and O as a flow-control word). `;` ends a block: each goes on its own
   line (LinuxCNC reads `;` as a comment).
 Refused: G33 with P (no start angle in LinuxCNC), G34 (no variable lead), I on a thread (no
@@ -73,7 +73,9 @@ def n_index(blocks, p):
 
 
 def emit(ws):
-    return " ".join(l + v for l, v in ws if l not in "NO")
+    # N, O: see above. T (tool select; no motion in either dialect) is dropped: the gcode
+    # module segfaults on any T word outside a running LinuxCNC (candidate.toml, [[finding]]).
+    return " ".join(l + v for l, v in ws if l not in "NOT")
 
 
 def absolute(ws):
@@ -95,7 +97,8 @@ def contour_sub(blocks, i, j, number, du, dw, keep_feed):
     lines = [("O%d SUB" % number, blocks[i][0])]
     for line, ws, raw in blocks[i:j + 1]:
         if ws is None:
-            raise Refuse("cannot translate the contour block %r" % raw.strip())
+            lines.append((raw.strip(), line))  # not words: LinuxCNC judges it as written
+            continue
         out = []
         for l, v in ws:
             if l == "X" and du:
@@ -110,10 +113,14 @@ def contour_sub(blocks, i, j, number, du, dw, keep_feed):
     return lines
 
 
-def translate(program, decimals):
+def translate(program, decimals, params):
+    """params: the request's machine parameters; 5132 and 5133 (increments) give G71/G72's
+    depth of cut and retract where no first block does, as on the machine."""
     blocks = blocks_of(program)
     body, subs, line_map = [], [], []
-    mode, lead, g7x_first = None, None, {71: (None, None), 72: (None, None)}
+    unit = 10.0 ** -decimals
+    dflt = (fmt(params.get("p5132_rough_depth", 1000) * unit), fmt(params.get("p5133_rough_retract", 500) * unit))
+    mode, lead, g7x_first = None, None, {71: dflt, 72: dflt}
     skip_to, sub_no = -1, 100
     for i, (line, ws, raw) in enumerate(blocks):
         if i <= skip_to:
@@ -145,20 +152,22 @@ def translate(program, decimals):
             if "P" not in letters and "Q" not in letters:
                 if c == 70:
                     raise Refuse("G70 without P/Q")
-                depth = letters.get("U" if c == 71 else "W")
-                g7x_first[c] = (depth, letters.get("R"))
+                g7x_first[c] = (letters.get("U" if c == 71 else "W", dflt[0]), letters.get("R", dflt[1]))
                 continue
             if "P" not in letters or "Q" not in letters:
-                raise Refuse("G%d without P or Q" % c)
+                body.append("G%d" % c)  # LinuxCNC's own error: a cycle without its profile
+                line_map.append(line)
+                continue
             p, q = float(letters["P"]), float(letters["Q"])
             before = [k for k in n_index(blocks, p) if (k < i if c == 70 else k == i + 1)]
-            if len(before) != 1:
-                raise Refuse("G%d: block N%s not where the cycle needs it" % (c, letters["P"]))
-            a = before[0]
-            ends = [k for k in n_index(blocks, q) if k >= a]
-            if not ends:
-                raise Refuse("G%d: block N%s not found" % (c, letters["Q"]))
-            b = ends[0]
+            ends = [k for k in n_index(blocks, q) if before and k >= before[0]]
+            if len(before) != 1 or not ends:
+                # No contour where the cycle needs it: LinuxCNC is given a profile subroutine
+                # that does not exist, and reports its own error.
+                body.append("G%d Q9999" % c)
+                line_map.append(line)
+                continue
+            a, b = before[0], ends[0]
             du = float(letters.get("U", 0))
             dw = float(letters.get("W", 0))
             sub_no += 1
@@ -171,11 +180,8 @@ def translate(program, decimals):
                 body.append("G70 Q%d D0 E0 P1" % sub_no)
             else:
                 depth, retract = g7x_first[c]
-                if depth is None:
-                    raise Refuse("G%d first block without its depth word: the parameter 5132 default is not translated" % c)
-                inc = float(depth)  # LinuxCNC I is a radius even in G7 (measured)
-                r = "" if retract is None else " R" + retract
-                body.append("G%d Q%d D0 I%s%s" % (c, sub_no, fmt(inc), r))
+                # LinuxCNC's I is the depth of cut as a radius even in G7 (measured), as Δd.
+                body.append("G%d Q%d D0 I%s R%s" % (c, sub_no, depth, retract))
             line_map.append(line)
             if c != 70:
                 skip_to = b  # CNT.FLOW: the contour is not run again as ordinary blocks
@@ -186,13 +192,12 @@ def translate(program, decimals):
             ws = [(l, v) for l, v in ws if l != "P"]  # P0: the index pulse, LinuxCNC's start
             if "I" in letters:
                 raise Refuse("a thread lead in threads per inch (I): LinuxCNC's G33 takes K only")
-            if lead is None:
-                raise Refuse("a thread move without a lead")
             if "F" in letters:
                 body.append("F" + letters["F"])
                 line_map.append(line)
             out = [("G", "33") if (l == "G" and float(v) in (32.0, 33.0)) else (l, v) for l, v in ws if l != "F"]
-            out.append(("K", lead))
+            if lead is not None:
+                out.append(("K", lead))  # else LinuxCNC's own error: G33 without K
             body.append(emit(absolute(out)))
             line_map.append(line)
             continue
