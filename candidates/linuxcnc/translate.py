@@ -11,6 +11,8 @@ where the two dialects name the same thing. Returns (ngc_text, line_map) or rais
   subroutine's absolute X/Z words are shifted by them — a translation, not a computation.
 - U/W outside a G7x profile (LinuxCNC's U, W are other axes there) → X[#5420*2+u], Z[#5422+w]:
   the current position plus the increment, as the source dialect reads them.
+- G40/G41/G42 are dropped (with nose radius 0 they change no path; else the program is
+  refused), and so is a leading byte-order mark.
 - G50 X Z (set the current position) → G92 X Z. N, O and T words are dropped (LinuxCNC reads N
   only at a line's start and O as a flow-control word). `;` ends a block: each goes on its own
   line (LinuxCNC reads `;` as a comment).
@@ -116,7 +118,15 @@ def contour_sub(blocks, i, j, number, du, dw, keep_feed):
 def translate(program, decimals, params):
     """params: the request's machine parameters; 5132 and 5133 (increments) give G71/G72's
     depth of cut and retract where no first block does, as on the machine."""
+    if program.startswith("\ufeff"):
+        program = program[1:]  # a byte-order mark is no program text (PRJ.LEX); LinuxCNC reads it as one
     blocks = blocks_of(program)
+    if params.get("nose_radius", 0) and any(ws and any(l == "G" and float(v) in (41.0, 42.0) for l, v in ws) for _, ws, _ in blocks):
+        raise Refuse("G41/G42 with a nose radius: LinuxCNC's compensation needs its tool table")
+    # G40/G41/G42 with nose radius 0 change no path in the source dialect; LinuxCNC's G41/G42
+    # would refuse G7x cycles and #5420 reads, so they are dropped.
+    blocks = [(n, ws if ws is None else [(l, v) for l, v in ws if not (l == "G" and float(v) in (40.0, 41.0, 42.0))], raw)
+              for n, ws, raw in blocks]
     body, subs, line_map = [], [], []
     unit = 10.0 ** -decimals
     dflt = (fmt(params.get("p5132_rough_depth", 1000) * unit), fmt(params.get("p5133_rough_retract", 500) * unit))
