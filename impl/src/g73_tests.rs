@@ -198,3 +198,15 @@ fn fill_equals_the_iterator() {
         assert_fill_agrees(src, Config::default(), &sizes);
     }
 }
+
+/// G73.USE: a contour that is not monotone (out to X20, back in to X14, out to X30) is taken by
+/// G73 and run on every pass; G71 refuses the same contour (G71.MONOTONE).
+#[test]
+fn any_contour_is_taken() {
+    let contour = "N10 G00 X10\nN20 G01 X20 Z-5\nN30 X14 Z-10\nN40 X30 Z-20\n";
+    let g73 = expand(&std::format!("G00 X40 Z5\nG73 U2 W0 R2\nG73 P10 Q40 F0.2\n{contour}"), Config::default());
+    assert_eq!(g73.alarm, None);
+    assert!(moves(&g73).iter().any(|m| (m.x, m.z) == (14_000, -10_000)), "the last pass runs the contour as written");
+    let g71 = expand(&std::format!("G00 X40 Z5\nG71 U1 R0.5\nG71 P10 Q40 F0.2\n{contour}"), Config::default());
+    assert_eq!(g71.alarm.map(|a| a.rule), Some(Rule::G71Monotone));
+}

@@ -30,7 +30,8 @@ mod canned;
 #[path = "modal_flow.rs"]
 mod flow;
 
-/// The modal motion mode.
+/// The modal motion mode. CYC.ONESHOT: G70–G75, G83, G84 have no mode here — their blocks
+/// leave it, and so a G92/G90/G94 run, as it was before them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Mode {
     Rapid,
@@ -514,7 +515,8 @@ impl Machine {
     /// TNRC.NOARC, TNRC.SWITCH, TNRC.RADIUS (check step 2, after the two-motion-codes conflict):
     /// G40/G41/G42 with G02/G03; G41 while G42 is in force or G42 while G41 is (the codes taken in
     /// the order written); a T word after which G41 or G42 is still in force; G41/G42 with a
-    /// nose radius. The compensation in force is updated.
+    /// nose radius. The compensation in force is updated. TNRC.TIP: no tip codes, no offset
+    /// geometry — `comp` feeds these checks only, no move reads it.
     fn compensation(&mut self, b: &Block, motion: Option<u64>) -> Result<(), Alarm> {
         let g_alarm = |code: AlarmCode, rule: Rule| Alarm::new(code, Some(b'G'), rule, b.line);
         let codes = || b.g_codes().iter().map(|g| g.mantissa).filter(|m| matches!(m, 40..=42));

@@ -86,7 +86,8 @@ impl Machine {
     /// G73.FORMAT, G73.UW: format (a)'s second block (`b_format` false: the kept Δi, Δk, d) or
     /// format (b) (its own I, K, D, which do not change the kept ones). (4) the feed, P, Q, then
     /// in format (b) I, K, D; (5) the contour read ahead (CNT.FIND as G71, CNT.MAX), each of its
-    /// blocks' checks, CNT.FIRST, then the pass bound (`g73::Cycle::new`).
+    /// blocks' checks, CNT.FIRST, then the pass bound (`g73::Cycle::new`). G73.USE: any contour
+    /// is taken, arcs included — no check like G71.MONOTONE / G72.MONOTONE is made.
     pub(super) fn pattern_second(&mut self, b_format: bool, v: &Vals, line: u32, run: &mut Run, prog: &mut Program<'_, '_>) -> Result<(), Alarm> {
         if let Some(f) = v.lead {
             self.feed = Some(f);

@@ -78,13 +78,15 @@ fn spindle_and_feed_modes() {
     );
 }
 
-/// TNRC.*: G41/G42/G40 change no path; the alarms in the register's order.
+/// TNRC.*: G41/G42/G40 change no path (TNRC.TIP: no tip codes, no offset geometry — the moves
+/// are those of the program without them); the alarms in the register's order.
 #[test]
 fn nose_radius_codes() {
     let c = Config::default();
     let t = expand("G42 G0 X10 Z1\nG1 Z-5 F1\nG40 X20\nT0202\n", c);
     assert_eq!(t.alarm, None);
     assert_eq!(moves(&t).len(), 3);
+    assert_eq!(moves(&t), moves(&expand("G0 X10 Z1\nG1 Z-5 F1\nX20\nT0202\n", c)));
     // G41 while G41 is in force changes nothing; G40 then G42 is legal.
     assert_eq!(alarm_of("G41\nG41 X1\nG40\nG42\nG40 T0101"), None);
     // TNRC.SWITCH: G41 ↔ G42 without G40, also within one block; a T while compensating.

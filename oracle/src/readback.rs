@@ -1,6 +1,6 @@
 //! A reader of canonical expanded G-code (the format `cycle_vocab::text` prints and the README
 //! documents): the header comment, then one motion per block, `G00 X Z`, `G01 X Z F`,
-//! `G32 X Z F [Q] [K [J]] [R]` or `G02`/`G03 X Z I K F` (I, K the absolute centre), and the
+//! `G32 X Z F [Q] [K [J]] [R] [L1]` or `G02`/`G03 X Z I K F` (I, K the absolute centre), and the
 //! non-motion events `G04 P` (a dwell) and `M03`/`M04` (the spindle); pass and alarm comments are
 //! passed over.
 //!
@@ -133,7 +133,7 @@ fn motion(block: &Block, grid: Grid) -> Result<Motion, String> {
     let allowed: &[u8] = match kind {
         MoveKind::Rapid => b"XZ",
         MoveKind::Feed => b"XZF",
-        MoveKind::Thread => b"XZFQKJR",
+        MoveKind::Thread => b"XZFQKJRL",
         MoveKind::ArcCw | MoveKind::ArcCcw => b"XZIKF",
     };
     if let Some(l) = block.letters().into_iter().find(|l| !allowed.contains(l)) {

@@ -309,6 +309,9 @@ fn diff_exit_codes_follow_the_relation() {
         if p.config().grid.increment == cycle_vocab::Increment::Isc {
             args.extend(["--increment", "isc"]);
         }
+        // The readings and parameters its header declares.
+        let pairs: Vec<String> = p.readings.iter().map(|(n, v)| format!("--reading={n}={v}")).chain(p.params.iter().map(|(n, v)| format!("--param={n}={v}"))).collect();
+        args.extend(pairs.iter().map(String::as_str));
         let o = run(&args);
         let reference = SpecEngine.expand(p.text.as_bytes(), &p.config());
         let candidate = ImplEngine.expand(p.text.as_bytes(), &p.config());

@@ -16,7 +16,10 @@ fn run(args: &[&str]) -> Output {
         .stderr(Stdio::piped())
         .spawn()
         .expect("the binary runs");
-    child.stdin.take().unwrap().write_all(G92.as_bytes()).unwrap();
+    // A refused option exits before reading standard input: the pipe may be closed by then.
+    if let Err(e) = child.stdin.take().unwrap().write_all(G92.as_bytes()) {
+        assert_eq!(e.kind(), std::io::ErrorKind::BrokenPipe, "{e}");
+    }
     child.wait_with_output().unwrap()
 }
 

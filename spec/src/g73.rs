@@ -120,7 +120,8 @@ struct Cycle {
 /// (CNT.PQ); in format (b) then I, K, D, each `MISSING WORD`, rule G73.FORMAT. U, W default to
 /// 0." Then "Cycle checks (step 5), in order: the contour (CNT.FIND as for G71 …; CNT.MAX; each
 /// contour block's checks; CNT.FIRST); the pass bound" — "d greater than `max_passes` is `TOO
-/// MANY PASSES` on that word (PRJ.MAXPASS)", R in format (a), D in format (b).
+/// MANY PASSES` on that word (PRJ.MAXPASS)", R in format (a), D in format (b). G73.USE: "No
+/// monotonicity: G73 takes any contour" — unlike G71/G72 no monotone or type check is made.
 fn cycle(kept: Kept, format_b: bool, st: &mut State, b: &BlockIn, src: &mut Source) -> Result<(), Alarm> {
     let (v, line) = (b.values, b.line);
     st.take_feed(v);

@@ -133,6 +133,8 @@ impl<'c> Machine<'c> {
             Code::Family(index, g) => {
                 let new_run = self.motion != Motion::Family(index, g);
                 let family = &mut self.families[index];
+                // CYC.ONESHOT: a one-shot family (G70–G75, G83, G84) leaves the motion mode —
+                // and so a G92/G90/G94 run — as it was before the block.
                 if family.modal() {
                     self.motion = Motion::Family(index, g);
                 }

@@ -227,3 +227,15 @@ fn g73_alarms() {
     let nc201 = Config { dialect: Dialect::Nc201, ..Config::default() };
     assert_eq!(alarm_with("G73 U1\n", &nc201), (UnsupportedCode, Some('G'), Rule::PrjDialect, 1));
 }
+
+/// G73.USE: a contour that is not monotone (out to X20, back in to X14, out to X30) is taken by
+/// G73 and run on every pass; G71 refuses the same contour (G71.MONOTONE).
+#[test]
+fn any_contour_is_taken() {
+    let contour = "N10 G00 X10\nN20 G01 X20 Z-5\nN30 X14 Z-10\nN40 X30 Z-20\n";
+    let g73 = expand(format!("G00 X40 Z5\nG73 U2 W0 R2\nG73 P10 Q40 F0.2\n{contour}").as_bytes(), &Config::default());
+    assert_eq!(g73.alarm, None);
+    assert!(g73.moves().any(|m| (m.x, m.z) == (14_000, -10_000)), "the last pass runs the contour as written");
+    let g71 = expand(format!("G00 X40 Z5\nG71 U1 R0.5\nG71 P10 Q40 F0.2\n{contour}").as_bytes(), &Config::default());
+    assert_eq!(g71.alarm.map(|a| a.rule), Some(Rule::G71Monotone));
+}

@@ -70,7 +70,8 @@ fn new_codes_under_nc201() {
 }
 
 /// TNRC.*: the register's checks, in its order, each on its line; paths are unchanged
-/// (TNRC.CODES: G41, G42, G40 are modal no-motion codes that change no path at radius 0).
+/// (TNRC.CODES: G41, G42, G40 are modal no-motion codes that change no path at radius 0;
+/// TNRC.TIP: no tip codes, no offset geometry).
 #[test]
 fn nose_radius_codes() {
     let c = Config::default();

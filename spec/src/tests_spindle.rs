@@ -125,7 +125,7 @@ fn rapid_under_g96_is_refused() {
     // A G00 block without axis words moves nothing; G97 in the block ends G96 there.
     run(&format!("{max}G96 S200 G0\nG97 G0 X10\n"));
     // Rapids a cycle makes, and a contour's G00 run by a cycle, are no G00 blocks of the program.
-    let t = run(&format!("{max}G96 S200\nG1 X50 Z2 F1\nG90 X40 Z-40 F0.3\nG92 X48 Z-20 F2\n"));
+    let t = run(&format!("{max}G96 S200\nG1 X50 Z2 F1\nG90 X40 Z-40 F0.3\nG92 X44 Z-20 F2\n"));
     assert!(t.moves().any(|m| m.kind == MoveKind::Rapid));
     run(&format!("{max}G1 X41 Z1 F1\nG96 S180\nG71 U2 R1\nG71 P10 Q30 F0.2\nN10 G0 X0\nN20 G1 Z-10\nN30 X40\nG97\n"));
 }

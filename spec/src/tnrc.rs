@@ -26,7 +26,8 @@ fn codes(b: &Block) -> Vec<u64> {
 
 /// Check step 2 for the compensation codes, in the register's order — [`no_arc`],
 /// [`switch`], [`tool_call`], [`radius`] — returning the side in force after the block.
-/// `writes_arc`: the block writes G02 or G03.
+/// `writes_arc`: the block writes G02 or G03. TNRC.TIP: the seed gives no offset geometry and
+/// no tip codes, so the side returned only feeds these checks: no path reads it.
 pub fn check(b: &Block, writes_arc: bool, before: Side, nose_radius: i64) -> Result<Side, Alarm> {
     let codes = codes(b);
     no_arc(&codes, writes_arc, b.line)?;

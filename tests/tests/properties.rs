@@ -11,10 +11,12 @@
 //! thread and the pull-out (COM.POINTS); the cycle ends at its start point (G76.PATH).
 //! G162: depths strictly increase, never pass P and end at P; full passes Q, 2Q, …; the split
 //! cuts sum exactly to the remainder (G162.PQ, G162.SPLIT); a variable pitch is never ≤ 0 and a
-//! growing one stays in the F range (G162.I); every pass starts and ends at S, at feed H, never
-//! at rapid (G162.PATH, G162.H).
+//! growing one stays in the F range under either reading of g162.lead (G162.I); A on any tenth
+//! of a degree (G162.A); every pass starts and ends at S, at feed H, never at rapid (G162.PATH,
+//! G162.H).
 
 use cycle_vocab::text::{fixed, Trace};
+use cycle_vocab::readings::G162Lead;
 use cycle_vocab::{AlarmCode, Config, Event, Grid, Increment, MoveKind, PassKind, Units};
 use proptest::prelude::*;
 
@@ -364,7 +366,10 @@ struct G162Case {
     v: i64,
     /// Taper, diameter.
     w: i64,
-    a_half: i64,
+    /// A, tenths of a degree (G162.A: any tenth is legal).
+    a_tenths: i64,
+    /// The declared reading g162.lead: `steps` (the letter) or `continuous`.
+    steps: bool,
     lead: i64,
     i: i64,
     j: i64,
@@ -375,13 +380,13 @@ struct G162Case {
 fn g162_case() -> impl Strategy<Value = G162Case> {
     (
         grid_strategy(),
-        (any::<bool>(), any::<bool>(), any::<bool>()),
+        (any::<bool>(), any::<bool>(), any::<bool>(), any::<bool>()),
         (magnitude(50_000_000), 1i64..=200, any::<u64>()),
         (0i64..=5_000_000, -4_000_000i64..=4_000_000, 1i64..=100_000_000),
-        (-120i64..=120, any::<u64>(), any::<u64>(), 1i64..=1_000_000, 0i64..=360_000),
+        (-600i64..=600, any::<u64>(), any::<u64>(), 1i64..=1_000_000, 0i64..=360_000),
         (any::<u64>(), -10_000_000i64..=10_000_000),
     )
-        .prop_map(|(grid, (internal, toward_plus, single), (p, ratio, qr), (v, w, len), (a_half, fr, ir, j, b), (sr, sz))| {
+        .prop_map(|(grid, (internal, toward_plus, single, steps), (p, ratio, qr), (v, w, len), (a_tenths, fr, ir, j, b), (sr, sz))| {
             // Q around P/ratio: ties (D = 0), Q > P and remainders of any size all occur.
             let q = match qr % 4 {
                 0 => (p / ratio).max(1),
@@ -397,7 +402,9 @@ fn g162_case() -> impl Strategy<Value = G162Case> {
             let len = len + v;
             let ze = if toward_plus { sz + len } else { sz - len };
             let lead = lead_for(grid, fr);
-            // I: none, shrinking, or growing within the F range at the end (G162.I).
+            // I: none, shrinking, or growing within the F range at the end (G162.I) — under
+            // `continuous` within the rate bound, under `steps` within the stepped bound (a drawn
+            // I halved until it holds).
             let c = grid.lead_counts_per_increment() as i128;
             let s2 = if 2 * (len - v) as i128 > w.abs() as i128 { 2 * (len - v) as i128 * c } else { w.abs() as i128 * c };
             let fmax: i64 = if grid.units == Units::Metric { 99_990_000 } else { 999_000 };
@@ -405,6 +412,13 @@ fn g162_case() -> impl Strategy<Value = G162Case> {
             let i = match ir % 3 {
                 0 => 0,
                 1 => -(1 + (ir >> 2) as i64 % fmax),
+                _ if steps => {
+                    let mut i = 1 + (ir >> 2) as i64 % fmax;
+                    while i > 0 && !steps_within(lead, i, j, s2, fmax) {
+                        i /= 2;
+                    }
+                    i
+                }
                 _ if room_i >= 1 => 1 + ((ir >> 2) as i128 % room_i.min(fmax as i128)) as i64,
                 _ => 0,
             };
@@ -417,7 +431,8 @@ fn g162_case() -> impl Strategy<Value = G162Case> {
                 pq: if single { None } else { Some((p, q)) },
                 v,
                 w,
-                a_half,
+                a_tenths,
+                steps,
                 lead,
                 i,
                 j,
@@ -425,6 +440,14 @@ fn g162_case() -> impl Strategy<Value = G162Case> {
                 h: 1 + (fr >> 32) as i64 % 99_990_000,
             }
         })
+}
+
+/// G162.I under `g162.lead=steps`: the lead F + k·I first above `fmax` (k* = ⌊(Fmax − F)/I⌋ + 1)
+/// is not reached within ②, (2·k*·F + I·k*·(k* − 1))·J ≥ 360 000·s2 (the register's bound).
+fn steps_within(f: i64, i: i64, j: i64, s2: i128, fmax: i64) -> bool {
+    let (f, i, j) = (f as i128, i as i128, j as i128);
+    let k = (fmax as i128 - f) / i + 1;
+    (2 * k * f + i * k * (k - 1)) * j >= 360_000 * s2
 }
 
 impl G162Case {
@@ -439,7 +462,7 @@ impl G162Case {
             fixed(self.lead, ld),
             fixed(self.v, d),
             fixed(self.w, d),
-            fixed(self.a_half * 5, 1),
+            fixed(self.a_tenths, 1),
             fixed(self.b, 3),
             fixed(self.j, 3)
         );
@@ -467,6 +490,10 @@ proptest! {
             dialect: cycle_vocab::Dialect::Nc201,
             grid: case.grid,
             params: cycle_vocab::Params { max_passes: Some(1_000_000), ..cycle_vocab::Params::default() },
+            readings: cycle_vocab::Readings {
+                g162_lead: if case.steps { G162Lead::Steps } else { G162Lead::Continuous },
+                ..cycle_vocab::Readings::default()
+            },
             ..Config::default()
         };
         for (engine, trace) in both(&program, config) {
@@ -516,12 +543,17 @@ proptest! {
                             prop_assert_eq!(m.feed, case.lead, "{}", ctx);
                             // Never ≤ 0: a shrinking lead stops at a positive floor.
                             prop_assert!(m.feed > 0 && (m.lead_change >= 0 || m.lead_floor > 0), "{}", ctx);
+                            prop_assert_eq!(m.lead_steps, case.steps && m.lead_change != 0, "a stepped lead under steps: {}", ctx);
                             if m.lead_change > 0 {
                                 let (dz, dx) = ((m.z - pos.1).abs() as i128, (m.x - pos.0).abs() as i128);
                                 let s2 = if 2 * dz > dx { 2 * dz * c } else { dx * c };
                                 let j = m.lead_change_angle as i128;
                                 let f = m.feed as i128;
-                                prop_assert!(j * f * f + 360_000 * m.lead_change as i128 * s2 <= j * fmax * fmax, "{}", ctx);
+                                if m.lead_steps {
+                                    prop_assert!(steps_within(m.feed, m.lead_change, m.lead_change_angle as i64, s2, fmax as i64), "{}", ctx);
+                                } else {
+                                    prop_assert!(j * f * f + 360_000 * m.lead_change as i128 * s2 <= j * fmax * fmax, "{}", ctx);
+                                }
                             }
                         }
                         pos = (m.x, m.z);

@@ -1,4 +1,4 @@
-(G96.RAPID, the letter: a G00 block while G96 is in force is UNSUPPORTED on G, before it moves; under --reading g96.rapid=allow it runs.)
+(G96.RAPID, the letter: a G00 block while G96 is in force is UNSUPPORTED on G, before it moves; under the declared reading g96.rapid = allow it runs.)
 G50 S2000
 G00 X40 Z2
 G96 S150

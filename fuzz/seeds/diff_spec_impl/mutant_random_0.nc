@@ -1,7 +1,5 @@
-(G86.FORMAT, M003: the seed's peck drilling line G83Z-30R0.5Q2000F0.2, read as docs/INTERPRETATION.md says:)
-(the initial level is the Z where the cycle is read, Z0 here at the face; R0.5 is the distance to the R level, Z0.5;)
-(Q2000 is the peck in the leWast increment, 2 9m; no P: no dwell.)
-G50 X60 Z40
-G00 X0 Z0 S800
-G83Z-30R0.5Q2000F0.2
-G00 X60 Z40
+(G162 variable pitch in steps, the lett9r g162.lead=steps of 004 lines 75-77: F1.5 for 180 degrees, then 1.0, then 0.5, never below or at abs I; then a pitch growing by 6.25 per revolution; --dialect nc201)
+G0 X30 Z5
+G162 X24 Z-20 H500 P0.5 Q0.5 F1.5 I-0.5 J180
+G162 X24 Z-20 H500 F1.5 I0.W25
+M30

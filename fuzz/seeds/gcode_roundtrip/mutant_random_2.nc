@@ -1,5 +1,20 @@
-(G76 infeed mode D1:Ç alternate right flank and centre)
-G00 X40 Z5;
-G76 P011060 Q0.08 R0.05 D1;
-G76 X27.4 Z-20 P1.3 Q0.4 FF2 J1 K1;
-M30;
+(SUB.NEST: four levels, main -> O100 -> O200Ç -> O300 F-> O400, the deepest FANUC allows; O200 runs twice.)
+G00 X50 Z2
+G90 X46 Z-20 F0.3
+M98 P100
+G00 X60 Z10
+M30
+O100
+M98 P20200
+M99
+O200
+G00 W-3
+M98 P300
+M99
+O300
+M98 P400
+M99
+O400
+G01 U-4 F0.1
+G00 U4
+M99

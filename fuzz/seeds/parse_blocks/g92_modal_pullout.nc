@@ -1,5 +1,5 @@
-(G92 modal run: each block changes one input of the pull-out - lead, J, K, R, Z - then a new run inside)
-G00 X50 Z5;
+(G92 modal run: each block changes one input of the pull-out - lead, J, K, R, Z - then a new run inside; from X55 every pull-out ends inside the start X, G92.PATH step 3)
+G00 X55 Z5;
 G92 X47 Z-30 F2;  (J and K omitted: the No.19 chamfer of the 2 mm lead, G92.JK.1)
 X46.5;            (the same inputs: the same pull-out)
 X46 F3;           (a new lead: a new No.19 chamfer)

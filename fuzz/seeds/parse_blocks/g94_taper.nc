@@ -1,4 +1,4 @@
-(G94 face taper: K = cut start Z - end Z, kept within the run; K and W of the same sign any size, of opposite signs up to abs K = abs W)
+(G94 face taper, --reading g94.k=start-minus-end, as FANUC and ADTECH write it: K = cut start Z - end Z, kept within the run; K and W of the same sign any size, of opposite signs up to abs K = abs W)
 G0 X50 Z2;
 G94 X20 Z-2 K-1 F0.2; (K < 0, W < 0: the cut starts at Z-3)
 Z-4; (K-1 kept: the cut starts at Z-5)

@@ -237,7 +237,7 @@ mod tests {
         assert_eq!(a.iter().map(|p| &p.program).collect::<Vec<_>>(), b.iter().map(|p| &p.program).collect::<Vec<_>>());
         let g92 = CycleRun::Family(registry::find("g92").unwrap());
         assert!(a.iter().all(|p| runs(&p.program, &p.config) == g92));
-        assert_eq!(a.iter().filter(|p| matches!(p.origin, Origin::Corpus { .. })).count(), 7); // sub_call runs G92 too
+        assert_eq!(a.iter().filter(|p| matches!(p.origin, Origin::Corpus { .. })).count(), 9); // g92_5131, g92_step3 (its alarm is G92's) and sub_call run G92 too
         // The family's generator, then the operator generator over the covered thread families.
         assert_eq!((fa.len(), fa[0].family, fa[0].drawn), (2, "g92", 20));
         assert_eq!((fa[1].family, fa[1].drawn), ("operator", 5));
@@ -284,8 +284,8 @@ mod tests {
     }
 
     /// In process, the generated cases draw every value of every reading (the corpus programs
-    /// run at the letter, with the pins); a candidate run's cases all carry its readings, those
-    /// told ahead too.
+    /// run under the readings their headers declare, with the pins); a candidate run's cases all
+    /// carry its readings, those told ahead too.
     #[test]
     fn campaigns_draw_every_reading_and_candidate_runs_fix_theirs() {
         let o = Options { cases: 8, ..Options::default() };
@@ -293,7 +293,10 @@ mod tests {
         let (cases, _) = drain(&o);
         for p in &cases {
             match p.origin {
-                Origin::Corpus { .. } => assert!(p.config.readings.is_letter(), "{}", p.name),
+                Origin::Corpus { path } => {
+                    let own = corpus::PROGRAMS.iter().find(|c| c.path == path).unwrap().config().readings;
+                    assert_eq!(p.config.readings, own, "{}", p.name);
+                }
                 Origin::Generated { .. } => counts.add(&p.config.readings),
             }
         }

@@ -51,29 +51,33 @@ pub fn g94(dice: &mut Dice) -> Case {
 }
 
 /// The taper for a cycle with travel `u` (X, diameter) and `w` (Z) from the start: mostly
-/// none; else of the travel's sign any size, or of the other sign up to its limit — the limit
-/// itself and one increment past it (G90.TAPER: 2|I| ≤ |U|, G94.TAPER: |K| ≤ |W|).
+/// none; else on the free side any size, or on the limited side up to its limit — the limit
+/// itself and one increment past it (G90.TAPER: 2|I| ≤ |U|; G94.TAPER: |k| ≤ |W| with k = C.z −
+/// D.z, which under the letter of `g94.k` is −K, so a K of the travel's sign is the limited one).
 fn taper(d: &mut Dice, cut: Cut, u: i64, w: i64, unit: i64) -> i64 {
     let travel = match cut {
         Cut::G90 => u,
         Cut::G94 => w,
     };
-    // The largest magnitude of a taper against the travel's sign.
+    // The largest magnitude of a taper on the limited side.
     let limit = match cut {
         Cut::G90 => travel.abs() / 2,
         Cut::G94 => travel.abs(),
     };
-    let against = -travel.signum();
-    // Both signs reach the limit and one past it: under the reading g94.k = start-minus-end a K
-    // of the travel's sign is the one against it.
+    let limited = match cut {
+        Cut::G90 => -travel.signum(),
+        Cut::G94 => travel.signum(),
+    };
+    // Both sides reach the limit and one past it for G94: under the reading g94.k =
+    // start-minus-end (k = +K) the free side of the letter is the limited one.
     match d.weighted(&[50, 20, 16, 8, 3, 3, 4, 2]) {
         0 => 0,
-        1 => travel.signum() * d.range(1, 10 * unit),
-        2 if limit > 0 => against * d.range(1, limit),
-        3 if limit > 0 => against * limit,
-        4 if against != 0 => against * (limit + 1),
-        6 if limit > 0 && cut == Cut::G94 => -against * limit,
-        7 if against != 0 && cut == Cut::G94 => -against * (limit + 1),
+        1 => -limited * d.range(1, 10 * unit),
+        2 if limit > 0 => limited * d.range(1, limit),
+        3 if limit > 0 => limited * limit,
+        4 if limited != 0 => limited * (limit + 1),
+        6 if limit > 0 && cut == Cut::G94 => -limited * limit,
+        7 if limited != 0 && cut == Cut::G94 => -limited * (limit + 1),
         _ => d.range(-5 * unit, 5 * unit),
     }
 }
