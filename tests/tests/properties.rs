@@ -402,12 +402,16 @@ fn g162_case() -> impl Strategy<Value = G162Case> {
             let s2 = if 2 * (len - v) as i128 > w.abs() as i128 { 2 * (len - v) as i128 * c } else { w.abs() as i128 * c };
             let fmax: i64 = if grid.units == Units::Metric { 99_990_000 } else { 999_000 };
             let room_i = (j as i128 * (fmax as i128 * fmax as i128 - lead as i128 * lead as i128)) / (360_000 * s2.max(1));
-            let i = match ir % 3 {
+            let mut i = match ir % 3 {
                 0 => 0,
                 1 => -(1 + (ir >> 2) as i64 % fmax),
                 _ if room_i >= 1 => 1 + ((ir >> 2) as i128 % room_i.min(fmax as i128)) as i64,
                 _ => 0,
             };
+            // Under the letter (g162.lead=steps) the stepped lead must stay within the range too.
+            while i > 0 && !stepped_within(lead as i128, i as i128, j as i128, s2, fmax as i128) {
+                i /= 2;
+            }
             G162Case {
                 grid,
                 sx,
@@ -425,6 +429,14 @@ fn g162_case() -> impl Strategy<Value = G162Case> {
                 h: 1 + (fr >> 32) as i64 % 99_990_000,
             }
         })
+}
+
+/// G162.I under `g162.lead=steps`: the first step above Fmax, k* = ⌊(Fmax − F)/I⌋ + 1, is not
+/// reached during the thread (s2 twice its long-axis travel, lead counts):
+/// (2·k*·F + I·k*·(k* − 1))·J ≥ 360 000·s2.
+fn stepped_within(f: i128, i: i128, j: i128, s2: i128, fmax: i128) -> bool {
+    let k = (fmax - f) / i + 1;
+    (2 * k * f + i * k * (k - 1)) * j >= 360_000 * s2
 }
 
 impl G162Case {
@@ -521,7 +533,11 @@ proptest! {
                                 let s2 = if 2 * dz > dx { 2 * dz * c } else { dx * c };
                                 let j = m.lead_change_angle as i128;
                                 let f = m.feed as i128;
-                                prop_assert!(j * f * f + 360_000 * m.lead_change as i128 * s2 <= j * fmax * fmax, "{}", ctx);
+                                if m.lead_steps {
+                                    prop_assert!(stepped_within(f, m.lead_change as i128, j, s2, fmax), "{}", ctx);
+                                } else {
+                                    prop_assert!(j * f * f + 360_000 * m.lead_change as i128 * s2 <= j * fmax * fmax, "{}", ctx);
+                                }
                             }
                         }
                         pos = (m.x, m.z);

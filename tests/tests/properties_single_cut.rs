@@ -5,7 +5,8 @@
 //! (G90 I, G94 K) drawn so that the taper rule holds (G90.TAPER, G94.TAPER), repeats omitting
 //! the words they keep (G90.MODAL, G94.MODAL). For every cycle: the pass header's index counts
 //! the run and its depth is the infeed of step ① (PRJ.TRACE); the moves are exactly ① the rapid
-//! to the cut start C (C.x = D.x + 2I, resp. C.z = D.z + K: the taper exact), ② the feed to D,
+//! to the cut start C (C.x = D.x + 2I, resp. C.z = D.z + k with k = −K under the letter
+//! `g94.k=end-minus-start`, the default: the taper exact), ② the feed to D,
 //! ③ the feed back to A's X (G94: A's Z), ④ the rapid to A (G90.PATH, G94.PATH) — each left out
 //! when it goes nowhere (PRJ.NOOP); every point lies in the box spanned by A, C and D (the cut
 //! stays between start and end); the cycle returns to its start.
@@ -92,7 +93,9 @@ impl Run {
                 block.push_str(&format!(" Z{}", l(c.end.1)));
             }
             if c.write_taper {
-                block.push_str(&format!(" {taper}{}", l(c.taper)));
+                // G94.TAPER, the letter: K = D.z − C.z, the opposite of the drawn k = C.z − D.z.
+                let written = if self.g94 { -c.taper } else { c.taper };
+                block.push_str(&format!(" {taper}{}", l(written)));
             }
             if i == 0 {
                 block.push_str(&format!(" F{}", fixed(self.feed % 999_000 + 1, self.grid.lead_decimals())));
