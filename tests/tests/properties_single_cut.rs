@@ -5,8 +5,8 @@
 //! (G90 I, G94 K) drawn so that the taper rule holds (G90.TAPER, G94.TAPER), repeats omitting
 //! the words they keep (G90.MODAL, G94.MODAL). For every cycle: the pass header's index counts
 //! the run and its depth is the infeed of step ① (PRJ.TRACE); the moves are exactly ① the rapid
-//! to the cut start C (C.x = D.x + 2I, resp. C.z = D.z − K under the letter of the reading
-//! g94.k: the taper exact), ② the feed to D,
+//! to the cut start C (C.x = D.x + 2I, resp. C.z = D.z + k with k = −K under the letter
+//! `g94.k=end-minus-start`, the default: the taper exact), ② the feed to D,
 //! ③ the feed back to A's X (G94: A's Z), ④ the rapid to A (G90.PATH, G94.PATH) — each left out
 //! when it goes nowhere (PRJ.NOOP); every point lies in the box spanned by A, C and D (the cut
 //! stays between start and end); the cycle returns to its start.
@@ -38,17 +38,15 @@ struct Run {
     cuts: Vec<Cut>,
 }
 
-/// A taper that keeps the taper rule for the travel `t`: C − D of the travel's sign any size,
-/// against it up to the limit (2|I| ≤ |U| for G90, |k| ≤ |W| for G94), none when there is no
-/// travel. G94's k = C.z − D.z is −K under the letter of g94.k, so its free K is against W.
+/// A taper that keeps the taper rule for the travel `t`: of its sign any size, against it up to
+/// the limit (2|I| ≤ |U| for G90, |K| ≤ |W| for G94), none when there is no travel.
 fn legal_taper(g94: bool, travel: i64, choice: u8, raw: i64) -> i64 {
     let limit = if g94 { travel.abs() } else { travel.abs() / 2 };
-    let free = if g94 { -travel.signum() } else { travel.signum() };
     match choice % 4 {
         0 => 0,
-        1 => free * (1 + raw.rem_euclid(1_000_000)),
-        2 if limit > 0 => -free * (1 + raw.rem_euclid(limit)),
-        3 => -free * limit,
+        1 => travel.signum() * (1 + raw.rem_euclid(1_000_000)),
+        2 if limit > 0 => -travel.signum() * (1 + raw.rem_euclid(limit)),
+        3 => -travel.signum() * limit,
         _ => 0,
     }
 }
@@ -95,7 +93,9 @@ impl Run {
                 block.push_str(&format!(" Z{}", l(c.end.1)));
             }
             if c.write_taper {
-                block.push_str(&format!(" {taper}{}", l(c.taper)));
+                // G94.TAPER, the letter: K = D.z − C.z, the opposite of the drawn k = C.z − D.z.
+                let written = if self.g94 { -c.taper } else { c.taper };
+                block.push_str(&format!(" {taper}{}", l(written)));
             }
             if i == 0 {
                 block.push_str(&format!(" F{}", fixed(self.feed % 999_000 + 1, self.grid.lead_decimals())));
@@ -114,7 +114,7 @@ impl Run {
     fn expected(&self, c: &Cut) -> [(MoveKind, i64, i64); 4] {
         let (a, d) = (self.start, c.end);
         if self.g94 {
-            let cz = d.1 - c.taper;
+            let cz = d.1 + c.taper;
             [(MoveKind::Rapid, a.0, cz), (MoveKind::Feed, d.0, d.1), (MoveKind::Feed, d.0, a.1), (MoveKind::Rapid, a.0, a.1)]
         } else {
             let cx = d.0 + 2 * c.taper;
