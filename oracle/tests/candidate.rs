@@ -427,3 +427,24 @@ fn declared_readings_reach_every_case() {
     assert!(stderr.contains("--reading g94.k=end-minus-start contradicts the candidate's greeting, which declares g94.k=start-minus-end"), "{stderr}");
     assert!(!out.join("evidence.json").exists());
 }
+
+/// Every child of a run declares the same readings: a restarted child that declares others is
+/// the failure (garbage) of the case that started it.
+#[test]
+fn a_restarted_child_must_declare_the_same_readings() {
+    if !python3() {
+        return;
+    }
+    let flip = out_dir("readings-flip").with_extension("flag");
+    let _ = std::fs::remove_file(&flip);
+    let fixture = root().join("oracle/tests/fixtures/readings_candidate.py");
+    let cmd = format!("python3 '{}' '{{\"g73.c\": \"skip\"}}' '{}'", fixture.display(), flip.display());
+    let engine = CandidateEngine::new(&cmd, Limits::default()).unwrap();
+    assert_eq!(engine.declared().unwrap().pairs(), vec![("g73.c", "skip")]);
+    let crash = engine.try_expand(b"G0 X1\n", &Config::default()).unwrap_err();
+    assert_eq!(crash.kind, FailureKind::Crash, "{crash}");
+    let changed = engine.try_expand(b"G0 X1\n", &Config::default()).unwrap_err();
+    assert_eq!(changed.kind, FailureKind::Garbage, "{changed}");
+    assert!(changed.message.contains("now declares the readings the letter throughout, where its first greeting declared g73.c=skip"), "{changed}");
+    let _ = std::fs::remove_file(&flip);
+}
