@@ -11,8 +11,10 @@ time, and refuses the others case by case. It is an independent implementation o
 the G92 single thread cycle (M002) and of the program rules a G92 program needs, written from
 docs/RULES.md and docs/INTERPRETATION.md: the lexer (PRJ.LEX, PRJ.WORD), the modal interpreter
 (PRJ.MODAL, PRJ.SUPPORTED, COM.ABSINC, COM.LEAD), word values and ranges (COM.UNITS, COM.RANGES),
-G00/G01 moves, and every G92.* rule: the path, taper, the J/K pull-out table, multi-start, inch,
-and the alarms a G92 program can raise. The second block of a G76/G78 cycle is outside its scope:
+G00/G01 moves, and every G92.* rule: the path (step ③ refused when it would run toward the part),
+taper, the J/K pull-out table (No.5131 for JK.1), multi-start, inch, and the alarms a G92 program
+can raise; the spindle codes (G50 S, G96, G97: G50.SMAX, G96.SMAX, G96.RAPID) and subprograms
+(M98, M99: SUB.CALL, SUB.FIND, SUB.RETURN, SUB.NEST), which the campaign's programs use. The second block of a G76/G78 cycle is outside its scope:
 it answers with an error for such programs (run it with `cyclecheck certify --cycles g92`).
 
     cyclecheck certify --cycles g92 --candidate 'python3 examples/g92_candidate.py'
@@ -38,9 +40,13 @@ ALWAYS = "MNOST"  # words every block accepts (N, O, M, S, T)
 CODES = {
     "BAD_CHARACTER": 1001, "BAD_NUMBER": 1002, "UNCLOSED_COMMENT": 1003, "DUPLICATE_WORD": 1004,
     "WORD_NOT_ALLOWED": 1005, "CONFLICT": 1006, "UNSUPPORTED_CODE": 1007, "MISSING_WORD": 2001,
-    "OUT_OF_RANGE": 2002, "PRECISION": 2003, "NOT_INTEGER": 2004, "GEOMETRY": 3001,
-    "TOO_MANY_PASSES": 3002, "UNSUPPORTED": 3003,
+    "OUT_OF_RANGE": 2002, "PRECISION": 2003, "NOT_INTEGER": 2004, "BLOCK_NOT_FOUND": 2005,
+    "GEOMETRY": 3001, "TOO_MANY_PASSES": 3002, "UNSUPPORTED": 3003, "NESTING": 3006,
 }
+
+FANUC_ANGLES = (80, 60, 55, 40, 30, 29, 0)  # FANUC G76 tool angles (F76.FORMAT, PRJ.DIALECT)
+MAX_RPM = 99_999  # G50 S (G50.SMAX)
+SUB_LEVELS = 4  # SUB.NEST
 
 
 class Alarm(Exception):
@@ -76,6 +82,42 @@ def half_up(num, den):
 
 def sign(v):
     return (v > 0) - (v < 0)
+
+
+_TAN = {}
+
+
+def round_mul_tan_degrees(c, degrees):
+    """round(c·tan(degrees°)) for c ≥ 0 and whole degrees 1…89 (G76.PULLOUT's tangent), in
+    fixed point with 60 decimal digits: far finer than any tie but 45° (tan = 1, exact here)."""
+    if degrees == 45:
+        return c
+    scale = 10 ** 60
+    if degrees not in _TAN:
+        def arctan_inv(x):
+            total = term = scale // x
+            n, s = 1, 1
+            while term:
+                term //= x * x
+                n += 2
+                s = -s
+                total += s * (term // n)
+            return total
+        pi = 4 * (4 * arctan_inv(5) - arctan_inv(239))
+        theta = pi * degrees // 180
+        sin, cos = 0, 0
+        term, k = theta, 1
+        while term:
+            sin += term
+            term = -term * theta // scale * theta // scale // ((k + 1) * (k + 2))
+            k += 2
+        term, k = scale, 0
+        while term:
+            cos += term
+            term = -term * theta // scale * theta // scale // ((k + 1) * (k + 2))
+            k += 2
+        _TAN[degrees] = sin * scale // cos
+    return (c * _TAN[degrees] + scale // 2) // scale
 
 
 # ----------------------------------------------------------------------------------------------
@@ -243,7 +285,7 @@ def check_config(cfg):
         ("p5145_depth_mode", 0, 1, "G78.DEPTHMODE"), ("max_passes", 1, 1_000_000, "PRJ.MAXPASS"),
     ]:
         within(p[key], lo, hi, None, rule)
-    if cfg["dialect"] == "fanuc" and p["p5143_tool_angle"] not in (80, 60, 55, 30, 29, 0):
+    if cfg["dialect"] == "fanuc" and p["p5143_tool_angle"] not in FANUC_ANGLES:
         raise Alarm("OUT_OF_RANGE", None, "F76.FORMAT", 0)
 
 
@@ -299,7 +341,7 @@ def check_p_digits(cycle, p, dialect, line):
         raise alarm("OUT_OF_RANGE", "P", "G76.FINISH", line)
     if cycle == "G78" and mid > 4:
         raise alarm("OUT_OF_RANGE", "P", "G78.MODE", line)
-    if dialect == "fanuc" and a not in (80, 60, 55, 30, 29, 0):
+    if dialect == "fanuc" and a not in FANUC_ANGLES:
         raise alarm("OUT_OF_RANGE", "P", "F76.FORMAT", line)
 
 
@@ -321,6 +363,11 @@ class Machine:
         self.j = self.k = None
         self.l = 1
         self.run_reset()
+        # Spindle (G50.SMAX, G96.SPEED): G96 in force, the maximum set, a G96.SMAX alarm due.
+        self.surface = False
+        self.smax = None
+        self.due = None
+        self.in_subprogram = False
 
     def run_reset(self):
         self.run_x = self.run_z = None
@@ -342,7 +389,8 @@ class Machine:
         self.move("thread", x, z, lead, angle, rule)
 
     def block(self, b):
-        """Executes one block; True when it ends the program (M02, M30)."""
+        """Executes one block: "next", "end" (M02, M30), "return" (M99), or ("call", n, runs,
+        line) for M98 (SUB.CALL)."""
         line = b.line
         fanuc = self.cfg["dialect"] == "fanuc"
         # G and M codes (PRJ.SUPPORTED, PRJ.DIALECT, COM.UNITS)
@@ -364,7 +412,7 @@ class Machine:
             elif m not in (18, 40, 50, 96, 97, 99):
                 # G50 S (the spindle maximum), G96/G97 (surface speed, rpm): no motion (G50.SMAX).
                 raise alarm("UNSUPPORTED_CODE", "G", "PRJ.SUPPORTED", line)
-        end = False
+        end = sub = False
         if b.has("M"):
             mw = b.words["M"]
             if mw.point:
@@ -372,12 +420,18 @@ class Machine:
             if mw.negative or mw.mantissa > 99:
                 raise alarm("UNSUPPORTED_CODE", "M", "PRJ.SUPPORTED", line)
             end = mw.mantissa in (2, 30)
+            if mw.mantissa == 99 and not self.in_subprogram:
+                # SUB.RETURN: M99 in the main program would restart it endlessly.
+                raise alarm("UNSUPPORTED", "M", "SUB.RETURN", line)
+            sub = mw.mantissa in (98, 99)
         # Conflicts (PRJ.WORD, COM.ABSINC, COM.LEAD)
         if sum(1 for g in b.g if not g.point and not g.negative and g.mantissa in MOTION_CODES) > 1:
             raise alarm("CONFLICT", "G", "PRJ.WORD", line)
         for a, c, rule in (("X", "U", "COM.ABSINC"), ("Z", "W", "COM.ABSINC"), ("F", "I", "COM.LEAD")):
             if b.has(a) and b.has(c):
                 raise alarm("CONFLICT", c, rule, line)
+        if sub:
+            return self.sub_block(b)
         # The kind of block
         axes = any(b.has(a) for a in "XUZW")
         if code is None:
@@ -406,7 +460,11 @@ class Machine:
             raise alarm("WORD_NOT_ALLOWED", letter, "F76.FORMAT" if letter in gsk else "PRJ.WORD", line)
         # Values, alphabetical
         v = {}
+        g50 = any(g.mantissa == 50 for g in b.g)
         for letter in b.letters():
+            if letter == "S":
+                v["S"] = self.s_value(b.words["S"], g50, line)
+                continue
             if letter in ALWAYS:
                 continue
             num = b.words[letter]
@@ -443,6 +501,7 @@ class Machine:
                     v[letter] = micron(num, letter, self.cfg, 1, N, line)
                 else:  # J, K
                     v[letter] = length(num, letter, self.grid, 0, N, line)
+        self.spindle(b, v, g50)
         # Execution
         if kind[0] in (0, 1):
             self.linear(kind[0] == 1, axes, v, line)
@@ -451,7 +510,57 @@ class Machine:
         elif kind[0] == "second":
             raise OutOfScope("the second block of %s is not implemented by this candidate (G92 only)" % kind[1])
         # A first block only stores its words for a later second block: no motion.
-        return end
+        self.missing_words_checked()
+        return "end" if end else "next"
+
+    def s_value(self, num, g50, line):
+        """S: an integer; with G50 in the block the maximum, 1 … 99 999 (G50.SMAX)."""
+        v = num.integer()
+        if v == "not_integer":
+            raise alarm("NOT_INTEGER", "S", "COM.RANGES", line)
+        if g50:
+            if v == "overflow" or not 1 <= v <= MAX_RPM:
+                raise alarm("OUT_OF_RANGE", "S", "G50.SMAX", line)
+        elif v == "overflow":
+            raise alarm("OUT_OF_RANGE", "S", "COM.RANGES", line)
+        return v
+
+    def spindle(self, b, v, g50):
+        """G96/G97 take effect in their block; S is the maximum with G50, else a surface speed
+        under G96 or an rpm under G97. A G96 with no maximum from an earlier block is due as
+        MISSING WORD S (G96.SMAX) at the end of the block's step 4."""
+        g96 = any(g.mantissa == 96 for g in b.g)
+        self.due = alarm("MISSING_WORD", "S", "G96.SMAX", b.line) if g96 and self.smax is None else None
+        for g in b.g:
+            if g.mantissa in (96, 97):
+                self.surface = g.mantissa == 96
+        if "S" in v and g50:
+            self.smax = v["S"]
+
+    def missing_words_checked(self):
+        """The end of check step 4: a G96.SMAX alarm due is raised here."""
+        due, self.due = self.due, None
+        if due is not None:
+            raise due
+
+    def sub_block(self, b):
+        """An M98 block takes N, M, P (SUB.CALL), an M99 block N, M (SUB.RETURN); no state."""
+        call = b.words["M"].mantissa == 98
+        allowed, rule = ("MNP", "SUB.CALL") if call else ("MN", "SUB.RETURN")
+        letters = sorted(set(b.letters()) | ({"G"} if b.g else set()))
+        for letter in letters:
+            if letter not in allowed:
+                raise alarm("WORD_NOT_ALLOWED", letter, rule, b.line)
+        if not call:
+            return "return"
+        if not b.has("P"):
+            raise alarm("MISSING_WORD", "P", "SUB.CALL", b.line)
+        p = b.words["P"].integer()
+        if p == "not_integer":
+            raise alarm("NOT_INTEGER", "P", "COM.RANGES", b.line)
+        if p == "overflow" or not 1 <= p <= 99_999_999 or p % 10_000 == 0:
+            raise alarm("OUT_OF_RANGE", "P", "SUB.CALL", b.line)
+        return ("call", p % 10_000, max(p // 10_000, 1), b.line)
 
     def take_lead(self, v):
         f = v.get("F", v.get("I"))
@@ -468,6 +577,11 @@ class Machine:
         self.take_lead(v)
         if feed_move and axes and self.feed is None:
             raise alarm("MISSING_WORD", "F", "COM.LEAD", line)
+        self.missing_words_checked()
+        # G96.RAPID (the letter, g96.rapid = refuse): no program block moves at rapid under G96.
+        refuse = self.cfg.get("readings", {}).get("g96.rapid", "refuse") == "refuse"
+        if not feed_move and axes and self.surface and refuse:
+            raise alarm("UNSUPPORTED", "G", "G96.RAPID", line)
         self.motion = "G01" if feed_move else "G00"
         if not axes:
             return
@@ -497,6 +611,7 @@ class Machine:
             return
         if self.feed is None:
             raise alarm("MISSING_WORD", "F", "COM.LEAD", line)
+        self.missing_words_checked()
         ax, az = self.x, self.z
         x, z = self.end_point(v)
         dx = x if x is not None else (self.run_x if self.run_x is not None else ax)
@@ -528,6 +643,11 @@ class Machine:
             segment = self.pullout(dx, dz, r, w, s, j, k, line), rule
         if starts > self.params["max_passes"]:  # PRJ.MAXPASS: one pass per start
             raise alarm("TOO_MANY_PASSES", "L", "PRJ.MAXPASS", line)
+        # G92.PATH step ③: it starts at X₃ (the pull-out's end, or D.x) and must not run from
+        # beyond A.x toward the part — refused on J when the pull-out carried X there, else on X.
+        x3 = dx if segment is None else segment[0][1][0]
+        if s * (ax - x3) < 0:
+            raise alarm("GEOMETRY", "J" if s * (ax - dx) >= 0 else "X", "G92.PATH", line)
         self.events.append({"event": "pass", "index": self.run_index, "kind": "ROUGH",
                             "diameter_depth": abs(ax - cx), "rule": "G92.PATH"})
         for start in range(starts):
@@ -543,11 +663,14 @@ class Machine:
             self.rapid(ax, az, "G92.PATH")
 
     def jk_table(self, no19):
-        """G92.JK.1–7: the pull-out amounts (short axis J, long axis K) and the deciding rule."""
+        """G92.JK.1–7: the pull-out amounts (short axis J, long axis K) and the deciding rule;
+        JK.1's short axis is round(c·tan(5131°))."""
         j = None if self.j is None else abs(self.j)
         k = None if self.k is None else abs(self.k)
-        if j is None:
-            result = ((no19, no19), "G92.JK.1") if k is None else ((no19, k or no19), "G92.JK.2")
+        if j is None and k is None:
+            result = ((round_mul_tan_degrees(no19, self.params["p5131_chamfer_angle"]), no19), "G92.JK.1")
+        elif j is None:
+            result = ((no19, k or no19), "G92.JK.2")
         elif j == 0:
             return None  # G92.JK.4, G92.JK.6
         elif k is None:
@@ -576,15 +699,82 @@ class Machine:
         return start, (ex, ez - sz * j)
 
 
+def m_code(b):
+    """The block's M code as a number, or None (with a point or a sign)."""
+    mw = b.words.get("M")
+    return None if mw is None or mw.point or mw.negative else mw.mantissa
+
+
+def read_area(program):
+    """SUB.FIND: the blocks after the main program's first M02/M30 (a lexing alarm anywhere is
+    the call's)."""
+    area, ended = [], False
+    for b in blocks(program):
+        if ended:
+            area.append(b)
+        elif m_code(b) in (2, 30):
+            ended = True
+    return area
+
+
+def is_program(b, n):
+    """The block's O word is exactly n (O2000.0 too)."""
+    o = b.words.get("O")
+    return o is not None and not o.negative and o.mantissa == n * 10 ** o.decimals
+
+
+def run(program, m):
+    """Runs the main program and the subprograms it calls (SUB.CALL … SUB.NEST)."""
+    main = blocks(program)
+    stack = []  # [area, start, next, runs left]
+    area, runs = None, 0
+    while True:
+        m.in_subprogram = bool(stack)
+        if stack:
+            f = stack[-1]
+            if f[2] == len(f[0]):
+                raise alarm("BLOCK_NOT_FOUND", "M", "SUB.RETURN", f[0][f[1]].line)
+            b = f[0][f[2]]
+            f[2] += 1
+        else:
+            b = next(main, None)
+            if b is None:
+                return
+        flow = m.block(b)
+        if flow == "end":
+            return
+        if flow == "return":
+            f = stack[-1]
+            f[3] -= 1
+            if f[3] > 0:
+                f[2] = f[1]
+            else:
+                stack.pop()
+        elif flow != "next":
+            _, n, r, line = flow
+            if area is None:
+                area = read_area(program)
+            found = [i for i, a in enumerate(area) if is_program(a, n)]
+            if len(found) != 1:
+                raise alarm("BLOCK_NOT_FOUND", "P", "SUB.FIND", line)
+            start = found[0]
+            if not any(m_code(a) == 99 for a in area[start:]):
+                raise alarm("BLOCK_NOT_FOUND", "M", "SUB.RETURN", area[start].line)
+            if len(stack) >= SUB_LEVELS:
+                raise alarm("NESTING", "P", "SUB.NEST", line)
+            if runs + r > m.params["max_passes"]:
+                raise alarm("TOO_MANY_PASSES", "P", "PRJ.MAXPASS", line)
+            runs += r
+            stack.append([area, start, start, r])
+
+
 def expand(program, cfg):
     """The trace of a program as the protocol's JSON object."""
     m = Machine(cfg)
     alarm_json = None
     try:
         check_config(cfg)
-        for b in blocks(program):
-            if m.block(b):
-                break
+        run(program, m)
     except Alarm as a:
         alarm_json = a.json()
     return {"grid": cfg["grid"], "events": m.events, "alarm": alarm_json}
