@@ -114,7 +114,9 @@ impl Calls {
     }
 
     /// Step 5 of an M98 block and the call: SUB.FIND (the area read whole: a lexing alarm there is
-    /// that alarm; no O block with the number, or more than one: `BLOCK NOT FOUND` on P), SUB.NEST
+    /// that alarm; no O block with the number, or more than one: `BLOCK NOT FOUND` on P),
+    /// SUB.RETURN (no M99 block from the O block on: `BLOCK NOT FOUND` on M at the O block's line,
+    /// before the subprogram runs — the register's clarification "Subprograms"), SUB.NEST
     /// (a call from level 4: `NESTING` on P), PRJ.MAXPASS (the runs, every repeat counted, beyond
     /// `max_passes`: `TOO MANY PASSES` on P); then `reader` — the caller's, just after its M98
     /// block — reads the subprogram from its O block. Work: one pass over the text.
@@ -130,11 +132,14 @@ impl Calls {
             known => known,
         };
         let p_alarm = |code: AlarmCode, rule: Rule| Alarm::new(code, Some(b'P'), rule, c.line);
-        let (start, o_line) = match area {
+        let (start, o_line, returns) = match area {
             Area::At(from) => find(src, from, c.program)?,
             _ => None,
         }
         .ok_or(p_alarm(AlarmCode::BlockNotFound, Rule::SubFind))?;
+        if !returns {
+            return Err(Alarm::new(AlarmCode::BlockNotFound, Some(b'M'), Rule::SubReturn, o_line));
+        }
         let Some(slot) = self.frames.get_mut(self.depth) else {
             return Err(p_alarm(AlarmCode::Nesting, Rule::SubNest));
         };
@@ -187,9 +192,10 @@ fn area_after(mut reader: Blocks<'_>) -> Result<Area, Alarm> {
 }
 
 /// SUB.FIND: reads the area from `from` to the end of the text; the one block whose O word's
-/// exact value is `n` — where it stands and its line — or `None` when there is none or more than
-/// one. A lexing alarm anywhere in the area is returned. Work: one pass over the area.
-fn find(src: &[u8], from: Mark, n: u64) -> Result<Option<(Mark, u32)>, Alarm> {
+/// exact value is `n` — where it stands, its line, and whether an M99 block stands at or after
+/// it (SUB.RETURN) — or `None` when there is none or more than one. A lexing alarm anywhere in
+/// the area is returned. Work: one pass over the area.
+fn find(src: &[u8], from: Mark, n: u64) -> Result<Option<(Mark, u32, bool)>, Alarm> {
     let mut reader = Blocks::resume(src, from);
     let mut b = Block::new();
     let mut found = None;
@@ -201,7 +207,10 @@ fn find(src: &[u8], from: Mark, n: u64) -> Result<Option<(Mark, u32)>, Alarm> {
         }
         if b.get(b'O').is_some_and(|o| o.is(n)) {
             count = count.saturating_add(1);
-            found.get_or_insert((at, b.line));
+            found.get_or_insert((at, b.line, false));
+        }
+        if let Some((_, _, returns)) = &mut found {
+            *returns |= b.get(b'M').is_some_and(|m| !m.point && !m.negative && m.mantissa == 99);
         }
     }
     Ok(if count == 1 { found } else { None })
@@ -223,14 +232,22 @@ mod tests {
         let src = b"G0 X1\nM30\nO1\nM99\nO2 (two)\nO2\nM99\n";
         let area = area_after(Blocks::new(src)).unwrap();
         let Area::At(from) = area else { panic!("{area:?}") };
-        let (at, line) = find(src, from, 1).unwrap().unwrap();
-        assert_eq!(line, 3);
+        let (at, line, returns) = find(src, from, 1).unwrap().unwrap();
+        assert_eq!((line, returns), (3, true));
         let mut b = Block::new();
         assert!(Blocks::resume(src, at).read(&mut b).unwrap());
         assert!(b.get(b'O').unwrap().is(1));
         // Two O2 blocks, no O3: not found.
         assert_eq!(find(src, from, 2), Ok(None));
         assert_eq!(find(src, from, 3), Ok(None));
+        // SUB.RETURN: an O block with no M99 at or after it.
+        let src = b"M30\nO1\nG0 X1\nO2 M99\n";
+        let Ok(Area::At(from)) = area_after(Blocks::new(src)) else { panic!() };
+        assert_eq!(find(src, from, 1).unwrap().map(|f| f.2), Some(true));
+        assert_eq!(find(src, from, 2).unwrap().map(|f| f.2), Some(true));
+        let src = b"M30\nO1\nG0 X1\n";
+        let Ok(Area::At(from)) = area_after(Blocks::new(src)) else { panic!() };
+        assert_eq!(find(src, from, 1).unwrap().map(|f| f.2), Some(false));
         assert_eq!(area_after(Blocks::new(b"G0 X1\nM3\n")), Ok(Area::Empty));
         // M30. and M-2 are no ends.
         assert_eq!(area_after(Blocks::new(b"M30.\nM-2\n")), Ok(Area::Empty));

@@ -137,12 +137,16 @@ fn find_alarms() {
 }
 
 /// SUB.RETURN: the end of the text before M99 (BLOCK NOT FOUND on M at the O block's line,
-/// after the subprogram's events); M99 in the main program; M02/M30 in a subprogram ends all.
+/// checked at the call: nothing of the subprogram runs — the register's clarification); M99 in
+/// the main program; M02/M30 in a subprogram ends all.
 #[test]
 fn return_alarms() {
     let t = expand("M98 P3\nG0 X9\nM30\n\nO3 (no return)\nG0 X1\n", Config::default());
     assert_eq!(t.alarm, al(AlarmCode::BlockNotFound, b'M', Rule::SubReturn, 5));
-    assert_eq!(moves(&t), [rapid(1, 0)]);
+    assert!(moves(&t).is_empty());
+    // An M30 in it does not make it a subprogram: it has no M99 either.
+    let t = expand("G0 X2\nM98 P3\nM30\nO3\nG0 X1\nM30\n", Config::default());
+    assert_eq!((t.alarm, moves(&t)), (al(AlarmCode::BlockNotFound, b'M', Rule::SubReturn, 4), std::vec![rapid(2, 0)]));
     assert_eq!(alarm_of("G0 X1\nM99\n"), al(AlarmCode::Unsupported, b'M', Rule::SubReturn, 2));
     // Before the words of the block (check step 2: the codes first).
     assert_eq!(alarm_of("M99 X1\n"), al(AlarmCode::Unsupported, b'M', Rule::SubReturn, 1));
