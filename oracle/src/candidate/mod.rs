@@ -408,6 +408,9 @@ mod tests {
         assert_eq!(Speaks { versions: 0b101, pipeline: false, declared: Declared::NONE, level: Level::Full }.list(), "1, 3");
         let declared = speaks(r#"{"id":0,"versions":[1],"readings":{"g94.k":"start-minus-end"}}"#).unwrap().declared;
         assert_eq!(declared.pairs(), vec![("g94.k", "start-minus-end")]);
+        // Both additions of the greeting together: a level and readings.
+        let both = speaks(r#"{"id":0,"versions":[1],"level":"motion","readings":{"g73.c":"skip"}}"#).unwrap();
+        assert_eq!((both.level, both.declared.pairs()), (Level::Motion, vec![("g73.c", "skip")]));
         for bad in [r#"{"id":0,"versions":[1],"readings":{"g95.k":"x"}}"#, r#"{"id":0,"versions":[1],"readings":{"g73.c":"sometimes"}}"#] {
             let f = speaks(bad).unwrap_err();
             assert!(f.kind == FailureKind::Garbage && f.message.contains("\"readings\""), "{f}");
