@@ -17,7 +17,8 @@ where the two dialects name the same thing. Returns (ngc_text, line_map) or rais
   only at a line's start and O as a flow-control word). `;` ends a block: each goes on its own
   line (LinuxCNC reads `;` as a comment).
 Refused: G33 with P (no start angle in LinuxCNC), G34 (no variable lead), I on a thread (no
-threads per inch), G92/G90/G94/G76/G78/G73–G75/G83/G84 (other meanings in LinuxCNC), G50 S.
+threads per inch), G92/G90/G94/G76/G78/G73–G75/G83/G84 (other meanings in LinuxCNC), G50 S,
+M98/M99 (FANUC subprograms; LinuxCNC's subroutines are O-words).
 """
 
 import re
@@ -149,6 +150,8 @@ def translate(program, decimals, params):
         motion = [g for g in gs if g in (0.0, 1.0, 2.0, 3.0, 32.0, 33.0)]
         if motion:
             mode = motion[0]
+        if "M" in letters and float(letters["M"]) in (98.0, 99.0):
+            raise Refuse("M98/M99 (FANUC subprograms): LinuxCNC calls subroutines with O-words instead")
         if 50.0 in gs:
             if "S" in letters:
                 raise Refuse("G50 S (spindle limit) has no LinuxCNC counterpart")

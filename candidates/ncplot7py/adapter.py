@@ -12,7 +12,7 @@ by its presence (ncplot7py's error numbers do not map one to one onto the protoc
 Refused (`{"id","error"}`), because ncplot7py 0.2.0 cannot be told them: the `nc201` dialect,
 G76 under `gsk` (its G76 is FANUC's two-block format), G76 programs off the metric ISB grid (its
 G76 P/Q/R integers are fixed at 0.001 mm), No.19 != 0 and No.107 != 0 (its G92 has no pull-out),
-and programs that are not UTF-8. ncplot7py's errors become an alarm. A block with axis words that
+subprograms (M98/M99: it has none and runs past an M98), and programs that are not UTF-8. ncplot7py's errors become an alarm. A block with axis words that
 ncplot7py executed without motion and without an error (a silent drop, e.g. `G0092`) is never
 answered as a trace: the adapter exits with status 3 and says why on stderr (a `crash` failure).
 
@@ -22,6 +22,7 @@ out: a deliberate error for candidates/plant_bug_check.py.
 
 import contextlib
 import json
+import re
 import os
 import sys
 
@@ -136,6 +137,8 @@ def refusal(program, cfg):
         return "ncplot7py 0.2.0 has no nc201 dialect (it is a FANUC control)"
     params = cfg["params"]
     text = program.upper().replace(" ", "")
+    if re.search(r"M0*9[89](?![0-9.])", text):
+        return "ncplot7py 0.2.0 has no subprograms (M98/M99): it runs past an M98 without calling"
     if "G92" in text and params.get("no19_pullout", 0) != 0:
         return "ncplot7py 0.2.0 has no G92 pull-out (thread chamfer): only No.19 = 0 can be served"
     if "G92" in text and params.get("no107_pullout_speed", 0) != 0:
