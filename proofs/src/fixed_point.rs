@@ -300,17 +300,22 @@ mod tests {
     /// below 2^-116) breaks the chain; tan 0.5° itself is pinned by landing on 1 at 45°.
     #[test]
     fn tangent_table_satisfies_the_addition_formula() {
+        assert_addition_chain(entry, TAN_MAX_INDEX, 90, 2.0);
+    }
+
+    /// The chain of the addition formula over a table whose entry `i` is tan(i / `per_degree`
+    /// degrees) as ⌊tan·2^128⌋ (exact at 0 and at `exact45`, the index of 45°), each entry
+    /// against the one before with y = one step (see the test above).
+    fn assert_addition_chain(entry: impl Fn(u32) -> Big, max: u32, exact45: u32, per_degree: f64) {
         let one = Big::pow2(256);
         let b = entry(1);
         let b1 = b.add(&Big::from_u128(1));
-        let exact = |h: u32| h == 0 || h == 90;
-        for h in 1..=TAN_MAX_INDEX {
-            let a = entry(h - 1);
-            let c = entry(h);
-            let (a_hi, c_hi) = (
-                if exact(h - 1) { a.clone() } else { a.add(&Big::from_u128(1)) },
-                if exact(h) { c.clone() } else { c.add(&Big::from_u128(1)) },
-            );
+        let exact = |i: u32| i == 0 || i == exact45;
+        for i in 1..=max {
+            let a = entry(i - 1);
+            let c = entry(i);
+            let a_hi = if exact(i - 1) { a.clone() } else { a.add(&Big::from_u128(1)) };
+            let c_hi = if exact(i) { c.clone() } else { c.add(&Big::from_u128(1)) };
             let ab_lo = a.mul(&b);
             let ab_hi = a_hi.mul(&b1);
             assert!(ab_hi < one, "tan x·tan y < 1 below 90°");
@@ -319,7 +324,8 @@ mod tests {
             let lhs_hi = c_hi.mul(&one.sub(&ab_lo));
             let rhs_lo = a.add(&b).mul(&one);
             let rhs_hi = a_hi.add(&b1).mul(&one);
-            assert!(lhs_lo <= rhs_hi && rhs_lo <= lhs_hi, "tan({}°) inconsistent with tan({}°)", f64::from(h) / 2.0, f64::from(h - 1) / 2.0);
+            let deg = |i: u32| f64::from(i) / per_degree;
+            assert!(lhs_lo <= rhs_hi && rhs_lo <= lhs_hi, "tan({}°) inconsistent with tan({}°)", deg(i), deg(i - 1));
         }
     }
 
@@ -333,24 +339,7 @@ mod tests {
             let (int, frac) = tan_tenths(t).unwrap();
             Big::from_u128(u128::from(int)).mul(&Big::pow2(128)).add(&Big::from_u128(frac))
         };
-        let one = Big::pow2(256);
-        let b = entry_t(1);
-        let b1 = b.add(&Big::from_u128(1));
-        let exact = |t: u32| t == 0 || t == 450;
-        for t in 1..=TAN_MAX_TENTHS {
-            let a = entry_t(t - 1);
-            let c = entry_t(t);
-            let a_hi = if exact(t - 1) { a.clone() } else { a.add(&Big::from_u128(1)) };
-            let c_hi = if exact(t) { c.clone() } else { c.add(&Big::from_u128(1)) };
-            let ab_lo = a.mul(&b);
-            let ab_hi = a_hi.mul(&b1);
-            assert!(ab_hi < one, "tan x·tan y < 1 below 90°");
-            let lhs_lo = c.mul(&one.sub(&ab_hi));
-            let lhs_hi = c_hi.mul(&one.sub(&ab_lo));
-            let rhs_lo = a.add(&b).mul(&one);
-            let rhs_hi = a_hi.add(&b1).mul(&one);
-            assert!(lhs_lo <= rhs_hi && rhs_lo <= lhs_hi, "tan({}°) inconsistent with tan({}°)", f64::from(t) / 10.0, f64::from(t - 1) / 10.0);
-        }
+        assert_addition_chain(entry_t, TAN_MAX_TENTHS, 450, 10.0);
         for t in 0..=TAN_MAX_TENTHS {
             let tan = (f64::from(t) * 0.1).to_radians().tan();
             for delta in (0..200u64).chain([10_000, 123_457]) {
