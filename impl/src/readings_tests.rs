@@ -2,7 +2,7 @@
 //! thread.zref on the whole expander, a test per value (the letter is the default).
 extern crate std;
 
-use crate::tests::{expand, fanuc, moves, passes};
+use crate::tests::{expand, fanuc, moves, pass_start_z, passes};
 use cycle_vocab::readings::{G73C, G75Relief, G94K, ThreadZRef};
 use cycle_vocab::{Alarm, AlarmCode, Config, Event, Move, MoveKind, PassKind, Rule};
 use std::vec::Vec;
@@ -140,15 +140,7 @@ fn pass_starts(g78: bool, mode: u32, c: Config) -> (Vec<i64>, Vec<(PassKind, i64
     };
     let t = expand(&src, c);
     assert_eq!(t.alarm, None, "{src}");
-    let z = t
-        .events
-        .windows(2)
-        .filter_map(|w| match w {
-            [Event::Pass(_), Event::Move(m)] => Some(m.z),
-            _ => None,
-        })
-        .collect();
-    (z, passes(&t).iter().map(|p| (p.kind, p.diameter_depth / 2)).collect())
+    (pass_start_z(&t), passes(&t).iter().map(|p| (p.kind, p.diameter_depth / 2)).collect())
 }
 
 /// Point 8, `start` (the letter): every mode measures from B.z = A.z — right A.z + σ·t(δ),

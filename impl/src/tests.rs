@@ -68,6 +68,17 @@ pub fn moves(t: &Trace) -> Vec<Move> {
     t.moves().copied().collect()
 }
 
+/// The Z of the first move of every pass (where each pass starts its cut).
+pub fn pass_start_z(t: &Trace) -> Vec<i64> {
+    t.events
+        .windows(2)
+        .filter_map(|w| match w {
+            [Event::Pass(_), Event::Move(m)] => Some(m.z),
+            _ => None,
+        })
+        .collect()
+}
+
 pub fn passes(t: &Trace) -> Vec<Pass> {
     t.events
         .iter()
@@ -305,14 +316,7 @@ fn infeed_modes() {
         };
         let t = expand(&src, groove);
         assert_eq!(t.alarm, None, "{src}");
-        let z: Vec<i64> = t
-            .events
-            .windows(2)
-            .filter_map(|w| match w {
-                [Event::Pass(_), Event::Move(m)] => Some(m.z),
-                _ => None,
-            })
-            .collect();
+        let z = pass_start_z(&t);
         // t(T) = round(1.25·tan 30°) = 0.722.
         assert_eq!(z[z.len() - 2], 5_000 - 722, "{src}");
         finish_z.push(z[z.len() - 1]);
