@@ -16,9 +16,9 @@ TARGETS="parse_blocks diff_spec_impl impl_invariants gcode_roundtrip"
 # The builder image's cargo is nightly; elsewhere take the nightly toolchain for cargo-fuzz.
 if cargo --version | grep -q nightly; then FUZZ_CARGO=(cargo); else FUZZ_CARGO=(cargo +nightly); fi
 
-# The seeds, encoded into fuzz/corpus/<target>/ by a plain build of the oracle (without the
+# The seeds, encoded into fuzz/corpus/<target>/ by a plain build of cyclecheck (without the
 # sanitizer flags the builder image puts in the environment).
-(unset RUSTFLAGS CFLAGS CXXFLAGS; cargo run --quiet -p cycle-oracle --bin cyclecheck -- fuzz --write-seeds)
+(unset RUSTFLAGS CFLAGS CXXFLAGS; cargo run --quiet -p cyclecheck --bin cyclecheck -- fuzz --write-seeds)
 
 (cd fuzz && "${FUZZ_CARGO[@]}" fuzz build -O)
 

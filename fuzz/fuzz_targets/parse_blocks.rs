@@ -1,7 +1,7 @@
-//! `parse_blocks`: see `cycle_oracle::fuzzing` (the body, shared with `cargo test`).
+//! `parse_blocks`: see `cycle_kernel::fuzzing` (the body, shared with `cargo test`).
 #![no_main]
 libfuzzer_sys::fuzz_target!(|data: &[u8]| {
-    if let Err(report) = cycle_oracle::fuzzing::Target::ParseBlocks.run(data) {
+    if let Err(report) = cycle_kernel::fuzzing::Target::ParseBlocks.run(data) {
         panic!("parse_blocks failed:\n{report}");
     }
 });

@@ -1,6 +1,6 @@
 //! Performance of the production expander (issue: performance, measured against the limit).
 //!
-//! The cases: each registry family's bench case (`cycle_oracle::registry`) at 1, 100 and 9 900
+//! The cases: each registry family's bench case (`cycle_kernel::registry`) at 1, 100 and 9 900
 //! passes (thread blocks for G32), two G76 extremes, and G71 per layer: contours of 10, 100 and
 //! 1 000 elements roughed in 10, 1 000 and 10 000 layers (`g71/<layers>_layers_<n>_elements`;
 //! the table adds the production expander's time per layer to the case's name).
@@ -23,7 +23,7 @@
 
 use criterion::{black_box, BenchmarkId, Criterion, Throughput};
 use cycle_impl::Expander;
-use cycle_oracle::registry::{BENCH_SIZES, FAMILIES};
+use cycle_kernel::registry::{BENCH_SIZES, FAMILIES};
 use cycle_vocab::{Config, Event, MoveKind};
 use std::time::{Duration, Instant};
 
@@ -68,7 +68,7 @@ fn cases() -> Vec<Case> {
     v.push(extreme());
     for elements in [10, 100, 1_000] {
         for layers in [10, 1_000, 10_000] {
-            let case = cycle_oracle::gen::contour::layers_bench(false, layers, elements);
+            let case = cycle_kernel::gen::contour::layers_bench(false, layers, elements);
             let name = format!("g71/{layers}_layers_{elements}_elements");
             v.push(Case { name, program: case.text(), config: case.config, layers: Some(layers) });
         }

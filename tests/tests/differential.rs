@@ -1,14 +1,14 @@
 //! Differential campaigns: the production expander (`cycle-impl`) against the executable
 //! reference (`cycle-spec`) on generated programs, judged by the exact conformance relation
-//! (`cycle_oracle::conformance::check`: equal traces field by field, rule tags aside).
+//! (`cycle_kernel::conformance::check`: equal traces field by field, rule tags aside).
 //!
-//! One campaign per cycle family of `cycle_oracle::registry` (a test module each, `g92::conforms`,
-//! …: the family's generator in `cycle_oracle::gen`, every program spelled in the forms the lexer
+//! One campaign per cycle family of `cycle_kernel::registry` (a test module each, `g92::conforms`,
+//! …: the family's generator in `cycle_kernel::gen`, every program spelled in the forms the lexer
 //! promises), and one of garbage (random bytes, word soup, corpus mutants): the same alarm,
 //! never a panic. The completeness test (`families.rs`) requires the list of family campaigns to
 //! equal the registry.
 //!
-//! Each generated case runs under declared readings drawn for it (`cycle_oracle::gen::drawn`:
+//! Each generated case runs under declared readings drawn for it (`cycle_kernel::gen::drawn`:
 //! each reading the letter half the time), so both engines are compared under every value.
 //!
 //! Cases per campaign: `CYCLECHECK_CASES` (default 10 000 per family, a fifth of it for
@@ -16,12 +16,12 @@
 //! is shrunk to a minimal program, then reported as the divergence (kind, event, field, both
 //! values as canonical G-code, the rule and its catalogue text, context) and the program text.
 
-use cycle_oracle::campaign;
-use cycle_oracle::conformance;
-use cycle_oracle::corpus;
-use cycle_oracle::engine::{Engine, ImplEngine, SpecEngine};
-use cycle_oracle::gen::{self, Case};
-use cycle_oracle::registry;
+use cycle_kernel::campaign;
+use cycle_kernel::conformance;
+use cycle_kernel::corpus;
+use cycle_kernel::engine::{Engine, ImplEngine, SpecEngine};
+use cycle_kernel::gen::{self, Case};
+use cycle_kernel::registry;
 use proptest::strategy::Strategy;
 use proptest::test_runner::{Config as ProptestConfig, RngAlgorithm, TestCaseError, TestError, TestRng, TestRunner};
 
@@ -50,7 +50,7 @@ fn conforms(case: &Case) -> Result<(), TestCaseError> {
             case.config.start_x,
             case.config.start_z,
             case.config.params,
-            cycle_oracle::readings::line(&case.config.readings),
+            cycle_kernel::readings::line(&case.config.readings),
             case.text()
         ))
     })

@@ -1,13 +1,13 @@
-//! The manuals' examples and one program per feature (`cycle_oracle::corpus`), expanded by the
+//! The manuals' examples and one program per feature (`cycle_kernel::corpus`), expanded by the
 //! reference spec under each program's configuration (dialect, units, declared readings,
 //! parameters) and snapshotted as canonical G-code (insta) in the folder of the family each runs
-//! (`snapshots/<family>/`, `cycle_oracle::registry::cycle_run`); apart from that, the production
+//! (`snapshots/<family>/`, `cycle_kernel::registry::cycle_run`); apart from that, the production
 //! expander is checked against the spec by the conformance relation on each. Rule IDs:
 //! G92.EXAMPLE, G76.EXAMPLE, G78.EXAMPLE, F76.EX1, F76.EX2, F76.MICRONS, COM.MULTISTART,
 //! G76.MODE, G78.MODE, G78.DEPTHMODE, COM.UNITS, G162.* (G162.SPLIT: the manual's P2.5 Q1
 //! sequence), G32, G33, G34, G71.EXAMPLE, G72.EXAMPLE (and G70.PATH, G70.RETURN).
 
-use cycle_oracle::{conformance, corpus, registry};
+use cycle_kernel::{conformance, corpus, registry};
 use cycle_vocab::text::Trace;
 use cycle_vocab::{AlarmCode, Config, Dialect, Event, MoveKind, PassKind, Rule};
 

@@ -1,12 +1,12 @@
-//! The completeness of the cycle families (`cycle_oracle::registry`): every registry family is
+//! The completeness of the cycle families (`cycle_kernel::registry`): every registry family is
 //! in every consumer, so a family added to the table without its generator, programs,
 //! snapshots, fuzz seeds, bench case, catalogue rules or differential campaign fails here,
 //! naming what is missing.
 
-use cycle_oracle::engine::{Engine, SpecEngine};
-use cycle_oracle::corpus;
-use cycle_oracle::gen;
-use cycle_oracle::registry::{self, CycleRun, Family, FAMILIES};
+use cycle_kernel::engine::{Engine, SpecEngine};
+use cycle_kernel::corpus;
+use cycle_kernel::gen;
+use cycle_kernel::registry::{self, CycleRun, Family, FAMILIES};
 use cycle_vocab::{Event, MoveKind, Rule};
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config as ProptestConfig, RngAlgorithm, TestRng, TestRunner};
@@ -69,7 +69,7 @@ fn missing(family: &'static Family) -> Vec<String> {
     }
 
     // Its rules in the catalogue.
-    if !Rule::ALL.iter().any(|&r| family.owns(r) && cycle_oracle::catalogue::entry(r).is_some()) {
+    if !Rule::ALL.iter().any(|&r| family.owns(r) && cycle_kernel::catalogue::entry(r).is_some()) {
         missing.push(format!("catalogue rules (docs/RULES.md) with prefix {:?}", family.rule_prefixes));
     }
     missing

@@ -3,12 +3,12 @@
 //! events in the same order, then the same alarm, for every buffer size — including sizes that
 //! end a buffer in the middle of a pass, before an alarm, or at the end of the program.
 //!
-//! Programs: every generator family of `cycle_oracle::gen` (`CYCLECHECK_CASES`, default
+//! Programs: every generator family of `cycle_kernel::gen` (`CYCLECHECK_CASES`, default
 //! 2 000, fixed seed `CYCLECHECK_SEED`) and the built-in corpus.
 
 use cycle_impl::Expander;
-use cycle_oracle::corpus;
-use cycle_oracle::gen::{self, Case};
+use cycle_kernel::corpus;
+use cycle_kernel::gen::{self, Case};
 use cycle_vocab::{Alarm, Config, Event, Move, Rule};
 use proptest::test_runner::{Config as ProptestConfig, RngAlgorithm, TestCaseError, TestRng, TestRunner};
 

@@ -1,6 +1,6 @@
 //! Replays every committed fuzz case through the fuzz targets' bodies, on stable Rust, without
 //! libFuzzer, and checks each case's expected verdict. The cases are stored decoded
-//! (`cycle_oracle::fuzzing::decoded`), so they keep their meaning whatever the byte encodings:
+//! (`cycle_kernel::fuzzing::decoded`), so they keep their meaning whatever the byte encodings:
 //!
 //! - the seeds, `fuzz/seeds/<target>/` (the manuals' examples and one program per feature, the
 //!   plain and fixed-seed random cases of every family and harness), written by `cyclecheck
@@ -10,10 +10,10 @@
 //!   rounding error (README, "Fuzzing"); it passes on this impl and fails with `--features
 //!   cycle-impl/planted-depth-bug`.
 
-use cycle_oracle::fuzzing::committed::{regressions_dir, seeds_dir};
-use cycle_oracle::fuzzing::decoded::{self, load_harnesses, load_programs};
-use cycle_oracle::fuzzing::{replay, seeds, Target};
-use cycle_tests::invariants;
+use cycle_kernel::fuzzing::committed::{regressions_dir, seeds_dir};
+use cycle_kernel::fuzzing::decoded::{self, load_harnesses, load_programs};
+use cycle_kernel::fuzzing::{replay, seeds, Target};
+use cycle_kernel::fuzzing::invariants;
 use std::path::Path;
 
 fn root() -> &'static Path {

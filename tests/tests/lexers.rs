@@ -5,10 +5,10 @@
 //! significant digits and decimals, zeros that do or do not count, signs, points, blanks
 //! between a letter and its number, comments, CR LF, the byte-order mark, four and five G
 //! words, repeated letters, bytes that are no part of a program. The comparison is the
-//! `parse_blocks` fuzz target's body (`cycle_oracle::fuzzing::parse_blocks`), which also runs
+//! `parse_blocks` fuzz target's body (`cycle_kernel::fuzzing::parse_blocks`), which also runs
 //! both engines on the program and requires them to conform.
 
-use cycle_oracle::fuzzing::parse_blocks;
+use cycle_kernel::fuzzing::parse_blocks;
 
 /// Numbers around the digit limits: `digits` significant digits, `decimals` after the point,
 /// `zeros` zeros before the first significant digit.

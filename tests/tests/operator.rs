@@ -5,8 +5,8 @@
 //! G92.HOLD, G92.SINGLE, G92.RESET, G76.HOLD, G76.SINGLE, G162.NOSTOP, OP.HOLD, OP.RESUME,
 //! OP.RESET, OP.SINGLE, OP.SCOPE, OP.AT, OP.REACH, OP.SCRIPT.
 
-use cycle_oracle::conformance;
-use cycle_oracle::operator::{parse_script, script_args};
+use cycle_kernel::conformance;
+use cycle_kernel::operator::{parse_script, script_args};
 use cycle_vocab::text::Trace;
 use cycle_vocab::{AlarmCode, Config, Dialect, Event, MoveKind, Rule};
 

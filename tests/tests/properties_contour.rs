@@ -3,7 +3,7 @@
 //! (each must satisfy them on its own; their agreement is `differential.rs`'s). Cases:
 //! `CYCLECHECK_CASES` (default 10 000), from the fixed seed `CYCLECHECK_SEED`.
 //!
-//! The programs are `cycle_oracle::gen::contour::legal`'s: G71 or G72, outside and inside, both
+//! The programs are `cycle_kernel::gen::contour::legal`'s: G71 or G72, outside and inside, both
 //! cutting directions, allowances of every sign, Δd from an increment to beyond the stock, e from
 //! 0 up, lines, rapids and arcs (by R and by I/K) that end exactly on their circles, so the
 //! translated contour Q is known exactly. Work is in the frame of the cycle in half increments
@@ -22,9 +22,9 @@
 //! (G71.RETURN); the pass count stays within `max_passes` (PRJ.MAXPASS). A following G70 is the
 //! contour translated by its U, W (G70.PATH, G70.UW) and returns to its start (G70.RETURN).
 
-use cycle_oracle::gen::contour::shape::{Axis, Element, Frame, Half, Kind};
-use cycle_oracle::gen::contour::{self, Built};
-use cycle_oracle::gen::{self, Dice};
+use cycle_kernel::gen::contour::shape::{Axis, Element, Frame, Half, Kind};
+use cycle_kernel::gen::contour::{self, Built};
+use cycle_kernel::gen::{self, Dice};
 use cycle_vocab::text::Trace;
 use cycle_vocab::{Event, Move, MoveKind, Pass, PassKind};
 use proptest::test_runner::{Config as ProptestConfig, RngAlgorithm, TestCaseError, TestError, TestRng, TestRunner};

@@ -10,7 +10,7 @@
 //! - OP.RESET: the trace ends at the point pressed, without an alarm.
 //! - OP.SINGLE / G92.SINGLE / G76.SINGLE: without its stop/resume pairs the trace is U.
 
-use cycle_oracle::gen;
+use cycle_kernel::gen;
 use cycle_vocab::text::Trace;
 use cycle_vocab::{Action, Along, Config, Event, Move, MoveKind, Rule, Script, StopReason};
 use proptest::prelude::*;
@@ -32,7 +32,7 @@ fn is_pullout(rule: Rule) -> bool {
 /// pull-out): (case, U, index, the cut's start, the start point A of its cycle).
 fn held_case(knobs: &[u32], pick: u32) -> Option<(gen::Case, Trace, usize, (i64, i64))> {
     let families = ["g92", "g76", "g78", "f76"];
-    let family = cycle_oracle::registry::find(families[pick as usize % families.len()])?;
+    let family = cycle_kernel::registry::find(families[pick as usize % families.len()])?;
     let case = gen::build(family.build, knobs);
     let u = cycle_spec::expand(&case.program, &case.config);
     let mut at = (case.config.start_x, case.config.start_z);
@@ -155,7 +155,7 @@ fn start_point(u: &Trace, e: usize, program_start: (i64, i64)) -> (i64, i64) {
 #[test]
 fn the_operator_generator_places_holds_on_moves() {
     let mut runner = proptest::test_runner::TestRunner::deterministic();
-    let families: Vec<_> = cycle_oracle::registry::FAMILIES.iter().collect();
+    let families: Vec<_> = cycle_kernel::registry::FAMILIES.iter().collect();
     let strategy = gen::operator::strategy(families);
     let (mut scripted, mut on_moves, mut elsewhere) = (0, 0, 0);
     for _ in 0..200 {

@@ -89,7 +89,7 @@ fn expanding_any_cycle_allocates_nothing() {
     // Every built-in program (every family: the manuals' examples and the feature programs),
     // then near-bound cycles and alarms.
     let mut programs: Vec<(&str, Config)> =
-        cycle_oracle::corpus::PROGRAMS.iter().map(|p| (p.text, p.config())).collect();
+        cycle_kernel::corpus::PROGRAMS.iter().map(|p| (p.text, p.config())).collect();
     programs.extend([
         (include_str!("../programs/g92_inch.nc"), inch_isc),
         ("G0 X40 Z5\nG76 P011060 Q0 R0.1\nG76 X27.4 Z-20 P1.09 Q0.01 F2\n", metric), // 9 801 rough passes

@@ -1,0 +1,431 @@
+//! A vendor's expander as an [`Engine`]: a child process speaking the candidate protocol
+//! `cyclecheck-candidate/1` to `/4` (`docs/CANDIDATE.md`); and the production expander speaking
+//! it ([`serve`], `cyclecheck serve`).
+//!
+//! One JSON request per line on the child's stdin — `{"schema", "id", "program" (or
+//! "program_hex"), "config"}` — and one JSON response per line on its stdout: `{"id", "trace"}`
+//! with the trace exactly as `cyclecheck expand --format json` prints it, or `{"id", "error"}`.
+//! Each child is first greeted ([`hello`]): it answers the versions it speaks, and whether it
+//! takes requests pipelined, or refuses the greeting (a legacy candidate).
+//!
+//! The child is hostile until proven otherwise:
+//! - the command line is split here ([`split_command`]) and executed directly, never through a
+//!   shell, and programs travel inside JSON strings, never on a command line;
+//! - each case has a timeout and an output cap ([`Limits`]);
+//! - a timeout, a crash, garbage, an oversized answer become that case's [`Failure`]; the child
+//!   is killed and a fresh one started for the next case, so a campaign always goes on;
+//! - stdin and stdout are served by their own threads, so a child that neither reads nor writes
+//!   cannot block the harness; the last few KiB of its stderr are kept for crash reports;
+//! - the child runs in a process group of its own, killed whole — with anything it started —
+//!   after a failure, at the end of the run and on SIGINT/SIGTERM ([`crate::reaper`]).
+
+use cycle_kernel::conformance::Level;
+use cycle_kernel::engine::{Failure, FailureKind};
+use cycle_kernel::readings::Declared;
+use cycle_vocab::text::Trace;
+use cycle_vocab::{Config, Dialect, Grid, Params, Readings, Script};
+use serde::{Deserialize, Serialize};
+use std::time::Duration;
+
+mod child;
+mod engine;
+mod serve;
+mod split;
+mod wire;
+pub use engine::{CandidateEngine, WINDOW};
+pub use serve::serve;
+pub use split::split_command;
+
+/// The protocol's first schema version: the thread cycles' events (rapids, feeds, thread moves,
+/// ROUGH/FINISH/SPRING passes).
+pub const SCHEMA: &str = "cyclecheck-candidate/1";
+/// The second: version 1 and arcs (`arc_cw`, `arc_ccw` with `cx`, `cz`), SEMI passes and the
+/// contour alarms (`BLOCK_NOT_FOUND`, `CONTOUR_TOO_LONG`) — what G02/G03 and G70–G72 produce.
+pub const SCHEMA_2: &str = "cyclecheck-candidate/2";
+
+/// The third: version 2 and the dwell and spindle events (`{"event": "dwell", ms, rule}`,
+/// `{"event": "spindle", state, rule}`) — what G73, G74, G75, G83 and G84 produce (G73 and the
+/// peck cycles need no new event, but a version-2 candidate may not know their codes: the
+/// version says which codes a request can hold).
+pub const SCHEMA_3: &str = "cyclecheck-candidate/3";
+
+/// The fourth: version 3 and operator events — `config.operator`, the script (OP.SCRIPT), and
+/// the events `press`, `stop`, `resume` and the alarm `OPERATOR` (3005). A request carries it
+/// whenever its configuration has a script, whatever the program; a candidate that does not
+/// model operator events refuses it and the case is reported as refused, not as a divergence.
+pub const SCHEMA_4: &str = "cyclecheck-candidate/4";
+
+/// The schema a case's request carries: version 4 when the configuration has an operator
+/// script, else the program's ([`schema_for`]).
+pub fn schema_for_case(program: &[u8], config: &Config) -> &'static str {
+    if config.operator.is_empty() {
+        schema_for(program)
+    } else {
+        SCHEMA_4
+    }
+}
+
+/// The schema a program's request carries: version 3 when a block of it writes G73, G74, G75,
+/// G80, G83 or G84, else version 2 when one writes G02, G03, G70, G71 or G72 (read with the
+/// reference's lexer, up to its first lexing alarm), else version 1 — so a candidate that
+/// speaks an earlier version still runs every family of that version, and refuses (never
+/// silently misreads) the programs whose traces need a later one.
+pub fn schema_for(program: &[u8]) -> &'static str {
+    let mut version = 1;
+    for b in cycle_spec::lex::blocks(program).map_while(Result::ok) {
+        for g in b.g_codes().filter(|g| !g.point && !g.negative) {
+            match g.to_string().as_str() {
+                "73" | "74" | "75" | "80" | "83" | "84" => return SCHEMA_3,
+                "2" | "3" | "70" | "71" | "72" => version = 2,
+                _ => {}
+            }
+        }
+    }
+    if version == 2 {
+        SCHEMA_2
+    } else {
+        SCHEMA
+    }
+}
+
+/// How much of a garbage answer a report quotes.
+const SNIPPET: usize = 200;
+
+/// Per-case limits on a candidate.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Limits {
+    /// How long one case may take, from sending the request to the end of the answer line.
+    pub timeout: Duration,
+    /// The most bytes one answer line may have.
+    pub max_output: usize,
+}
+
+impl Limits {
+    /// 10 s per case, in ms.
+    pub const DEFAULT_TIMEOUT_MS: u64 = 10_000;
+    pub const DEFAULT_TIMEOUT: Duration = Duration::from_millis(Limits::DEFAULT_TIMEOUT_MS);
+    /// 64 MiB per answer (a trace of ~500 000 events).
+    pub const DEFAULT_MAX_OUTPUT: usize = 64 << 20;
+}
+
+impl Default for Limits {
+    fn default() -> Limits {
+        Limits { timeout: Limits::DEFAULT_TIMEOUT, max_output: Limits::DEFAULT_MAX_OUTPUT }
+    }
+}
+
+/// The version number of a schema name (`cyclecheck-candidate/3` → 3), if it is one of ours.
+pub fn version_of(schema: &str) -> Option<u8> {
+    [SCHEMA, SCHEMA_2, SCHEMA_3, SCHEMA_4].iter().position(|s| *s == schema).map(|i| i as u8 + 1)
+}
+
+/// A request's configuration: `Config`'s fields as it serializes them, but `readings` always
+/// written with every reading (the letter too), so a candidate knows what it is judged against.
+#[derive(Serialize)]
+struct WireConfig<'a> {
+    dialect: Dialect,
+    grid: Grid,
+    params: &'a Params,
+    start_x: i64,
+    start_z: i64,
+    #[serde(skip_serializing_if = "no_script")]
+    operator: &'a Script,
+    readings: &'a Readings,
+}
+
+fn no_script(s: &&Script) -> bool {
+    s.is_empty()
+}
+
+/// The request line for case `id` (without the newline). The program goes as `program` when it
+/// is UTF-8, else as `program_hex` (two lowercase hex digits per byte). Every parameter is
+/// named: those the configuration leaves unset with the reference's defaults; every declared
+/// reading is named, those at the letter too.
+pub fn request(id: u64, program: &[u8], config: &Config) -> String {
+    #[derive(Serialize)]
+    struct Request<'a> {
+        schema: &'static str,
+        id: u64,
+        config: WireConfig<'a>,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        program: Option<&'a str>,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        program_hex: Option<String>,
+    }
+    let config = Config { params: cycle_spec::config::params(config).as_set(), ..*config };
+    let text = std::str::from_utf8(program).ok();
+    let program_hex = text.is_none().then(|| program.iter().map(|b| format!("{b:02x}")).collect());
+    let wire = WireConfig {
+        dialect: config.dialect,
+        grid: config.grid,
+        params: &config.params,
+        start_x: config.start_x,
+        start_z: config.start_z,
+        operator: &config.operator,
+        readings: &config.readings,
+    };
+    let req = Request { schema: schema_for_case(program, &config), id, config: wire, program: text, program_hex };
+    serde_json::to_string(&req).expect("a request serializes")
+}
+
+/// The schema of the greeting ([`hello`]) and of its answer.
+pub const HELLO: &str = "cyclecheck-candidate/hello";
+
+/// The versions this build speaks, offered in the greeting.
+pub const VERSIONS: [u8; 4] = [1, 2, 3, 4];
+
+/// The greeting sent first to every child (id 0, which no case has):
+/// `{"schema":"cyclecheck-candidate/hello","id":0,"versions":[1,2,3,4]}`.
+pub fn hello() -> String {
+    serde_json::json!({ "schema": HELLO, "id": 0, "versions": VERSIONS }).to_string()
+}
+
+/// What a child said to the greeting.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Speaks {
+    /// Bit v − 1 set for each version v it speaks (of those offered).
+    pub versions: u8,
+    /// Whether it takes several requests before answering the first (answering in order).
+    pub pipeline: bool,
+    /// The declared readings it follows (`"readings"`; undeclared: the letter).
+    pub declared: Declared,
+    /// What its traces hold, so what is compared (`"level"`, [`Level::Full`] when absent).
+    pub level: Level,
+}
+
+impl Speaks {
+    /// A legacy candidate (it refused the greeting): sent every version, one request at a time,
+    /// judged against the letter.
+    pub const LEGACY: Speaks = Speaks { versions: 0b1111, pipeline: false, declared: Declared::NONE, level: Level::Full };
+
+    pub fn speaks(self, version: u8) -> bool {
+        (1..=8).contains(&version) && self.versions & (1 << (version - 1)) != 0
+    }
+
+    /// The versions, as a list for a report: `1, 2`.
+    pub fn list(self) -> String {
+        let v: Vec<String> = VERSIONS.iter().filter(|&&v| self.speaks(v)).map(u8::to_string).collect();
+        if v.is_empty() {
+            "none".to_string()
+        } else {
+            v.join(", ")
+        }
+    }
+}
+
+/// Reads the answer to the greeting: `{"id": 0, "versions": [..], "pipeline": bool, "readings":
+/// {name: value, …}, "level": name}` (versions not offered are ignored; `pipeline` defaults to
+/// false; `readings`, the declared readings the candidate follows, to none: the letter; `level`
+/// to `full`), or a refusal `{"id": 0, "error"}` — a legacy candidate, [`Speaks::LEGACY`].
+/// Anything else — an unknown reading, value or level too — is garbage.
+pub fn parse_hello(line: &[u8]) -> Result<Speaks, Failure> {
+    let garbage = |why: &str| Failure { kind: FailureKind::Garbage, message: format!("{why}; answer: {}", snippet(line)) };
+    let value: serde_json::Value = serde_json::from_slice(line).map_err(|e| garbage(&format!("not JSON ({e})")))?;
+    let Some(object) = value.as_object() else { return Err(garbage("not a JSON object")) };
+    if object.get("id").and_then(serde_json::Value::as_u64) != Some(0) {
+        return Err(garbage("the greeting's \"id\" is 0"));
+    }
+    match (object.get("versions"), object.get("error")) {
+        (None, Some(_)) => Ok(Speaks::LEGACY),
+        (Some(serde_json::Value::Array(list)), None) => {
+            let mut versions = 0u8;
+            for v in list {
+                match v.as_u64() {
+                    Some(v) if VERSIONS.contains(&(v as u8)) && v <= 8 => versions |= 1 << (v - 1),
+                    Some(_) => {}
+                    None => return Err(garbage("\"versions\" lists integers")),
+                }
+            }
+            let pipeline = match object.get("pipeline") {
+                None => false,
+                Some(p) => p.as_bool().ok_or_else(|| garbage("\"pipeline\" is true or false"))?,
+            };
+            let declared = Declared::parse(object.get("readings")).map_err(|e| garbage(&e))?;
+            let level = match object.get("level") {
+                None => Level::Full,
+                Some(l) => l.as_str().ok_or_else(|| garbage("\"level\" is a level's name")).and_then(|l| Level::parse(l).map_err(|e| garbage(&e)))?,
+            };
+            Ok(Speaks { versions, pipeline, declared, level })
+        }
+        _ => Err(garbage("exactly one of \"versions\" (a list) and \"error\" expected")),
+    }
+}
+
+/// Reads the answer line to request `id`: the trace, or the failure it amounts to.
+pub fn parse_response(id: u64, line: &[u8]) -> Result<Trace, Failure> {
+    if let Some((got, trace)) = usual_answer(line) {
+        if got == id {
+            return Ok(trace);
+        }
+    }
+    let garbage = |why: String| Failure { kind: FailureKind::Garbage, message: format!("{why}; answer: {}", snippet(line)) };
+    let value: serde_json::Value = serde_json::from_slice(line).map_err(|e| garbage(format!("not JSON ({e})")))?;
+    let Some(object) = value.as_object() else {
+        return Err(garbage("not a JSON object".to_string()));
+    };
+    match object.get("id").and_then(serde_json::Value::as_u64) {
+        Some(got) if got == id => {}
+        Some(got) => return Err(garbage(format!("answer to request {got}, expected {id}"))),
+        None => return Err(garbage("no numeric \"id\"".to_string())),
+    }
+    match (object.get("trace"), object.get("error")) {
+        (Some(trace), None) => {
+            serde_json::from_value(trace.clone()).map_err(|e| garbage(format!("\"trace\" is not a trace ({e})")))
+        }
+        (None, Some(error)) => Err(Failure {
+            kind: FailureKind::Refused,
+            message: error.as_str().map_or_else(|| error.to_string(), str::to_string),
+        }),
+        _ => Err(garbage("exactly one of \"trace\" and \"error\" expected".to_string())),
+    }
+}
+
+/// The usual answer, `{"id", "trace"}` and nothing else, read straight into its id and trace;
+/// anything else is left to [`parse_response`]'s long way, which says what is wrong.
+pub(crate) fn usual_answer(line: &[u8]) -> Option<(u64, Trace)> {
+    #[derive(Deserialize)]
+    #[serde(deny_unknown_fields)]
+    struct Answer {
+        id: u64,
+        trace: Trace,
+    }
+    wire::read(line).or_else(|| serde_json::from_slice::<Answer>(line).ok().map(|a| (a.id, a.trace)))
+}
+
+/// The start of `bytes`, as lossy text, for a report.
+fn snippet(bytes: &[u8]) -> String {
+    let text = String::from_utf8_lossy(&bytes[..bytes.len().min(SNIPPET)]).into_owned();
+    if bytes.len() > SNIPPET {
+        format!("{text:?}… ({} bytes)", bytes.len())
+    } else {
+        format!("{text:?}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cycle_kernel::engine::Engine as _;
+
+    #[test]
+    fn requests_carry_schema_id_program_and_config() {
+        let r: serde_json::Value = serde_json::from_str(&request(7, b"G0 X1\n", &Config::default())).unwrap();
+        assert_eq!(r["schema"], SCHEMA);
+        assert_eq!(r["id"], 7);
+        assert_eq!(r["program"], "G0 X1\n");
+        assert_eq!(r["config"]["dialect"], "gsk");
+        assert_eq!(r["config"]["grid"]["units"], "metric");
+        assert_eq!(r["config"]["params"]["no19_pullout"], 10);
+        // Every reading, at the letter too; the configuration reads back as it was.
+        for (name, value) in Readings::default().pairs() {
+            assert_eq!(r["config"]["readings"][name], value, "{name}");
+        }
+        let mut config = Config::default();
+        config.readings.set("g96.rapid", "allow").unwrap();
+        let r: serde_json::Value = serde_json::from_str(&request(8, b"G0 X1\n", &config)).unwrap();
+        assert_eq!(r["config"]["readings"].as_object().map(|m| m.len()), Some(Readings::NAMES.len()));
+        assert_eq!(r["config"]["readings"]["g96.rapid"], "allow");
+        let back: Config = serde_json::from_value(r["config"].clone()).unwrap();
+        assert_eq!(back, Config { params: cycle_spec::config::params(&config).as_set(), ..config });
+        let r: serde_json::Value = serde_json::from_str(&request(1, b"G0\xff", &Config::default())).unwrap();
+        assert_eq!(r["program_hex"], "4730ff");
+        assert!(r.get("program").is_none());
+    }
+
+    /// Version 3 for the programs that write G73–G75, G80, G83 or G84, else version 2 for an arc
+    /// or a contour cycle.
+    #[test]
+    fn the_schema_follows_the_program() {
+        for (program, schema) in [
+            (&b"G0 X1\nG92 X1 Z-1 F1\nG90 X1 Z-2 I-1 F1\n"[..], SCHEMA),
+            (b"G0 X1 Z1\nG02 X2 Z0 R1 F1\n", SCHEMA_2),
+            (b"g3 x2 z0 i1 f1\n", SCHEMA_2),
+            (b"G71 U1 R1\n", SCHEMA_2),
+            (b"G70 P1 Q2\n", SCHEMA_2),
+            (b"G72 W1\n", SCHEMA_2),
+            (b"G0 X0 Z2\nG74 R1\n", SCHEMA_3),
+            (b"G02 X2 Z0 R1 F1\nG73 U1 W1 R2\n", SCHEMA_3),
+            (b"G98 M29 S60\nG84 Z-21 R2 F60\n", SCHEMA_3),
+            (b"G83 Z-30 R0.5 Q2000 F0.2\n", SCHEMA_3),
+            (b"G75 R1\n", SCHEMA_3),
+            (b"G80\n", SCHEMA_3),
+            (b"G2.0 X1\n", SCHEMA),
+            (b"G32 X1 Z-1 F1\n#\nG02 X1 R1\n", SCHEMA),
+        ] {
+            assert_eq!(schema_for(program), schema, "{}", String::from_utf8_lossy(program));
+        }
+    }
+
+    /// A configuration with an operator script asks for version 4 and carries the script.
+    #[test]
+    fn an_operator_script_asks_for_version_4() {
+        use cycle_vocab::{Action, Along, Script};
+        let script = Script::of(&[Action::Hold(Along { event: 3, num: 1, den: 2 }), Action::Start]).unwrap();
+        let config = Config { operator: script, ..Config::default() };
+        assert_eq!(schema_for_case(b"G0 X1\n", &config), SCHEMA_4);
+        assert_eq!(schema_for_case(b"G0 X1\n", &Config::default()), SCHEMA);
+        let r: serde_json::Value = serde_json::from_str(&request(2, b"G0 X1\n", &config)).unwrap();
+        assert_eq!(r["schema"], SCHEMA_4);
+        assert_eq!(r["config"]["operator"][0]["hold"]["den"], 2);
+        assert_eq!(r["config"]["operator"][1], "start");
+        let plain: serde_json::Value = serde_json::from_str(&request(3, b"G0 X1\n", &Config::default())).unwrap();
+        assert!(plain["config"].get("operator").is_none(), "no script, no field");
+    }
+
+    #[test]
+    fn responses_are_traces_refusals_or_garbage() {
+        let trace = cycle_spec::expand(b"G0 X65 Z5\nG92 X58.7 Z-28 F3\n", &Config::default());
+        let ok = format!("{{\"id\":3,\"trace\":{}}}", serde_json::to_string(&trace).unwrap());
+        assert_eq!(parse_response(3, ok.as_bytes()), Ok(trace));
+        let kind = |id, line: &str| parse_response(id, line.as_bytes()).unwrap_err().kind;
+        assert_eq!(kind(3, &ok.replace("G92.PATH", "NO.SUCH.RULE")), FailureKind::Garbage);
+        assert_eq!(kind(4, &ok), FailureKind::Garbage);
+        assert_eq!(kind(1, "{\"id\":1,\"error\":\"G76 not supported\"}"), FailureKind::Refused);
+        for garbage in ["", "hello", "[1]", "{\"id\":1}", "{\"trace\":{}}", "{\"id\":1,\"trace\":{\"x\":1}}"] {
+            assert_eq!(kind(1, garbage), FailureKind::Garbage, "{garbage:?}");
+        }
+        let e = parse_response(1, b"not json at all").unwrap_err();
+        assert!(e.message.contains("\"not json at all\""), "{e}");
+    }
+
+    /// The greeting's answers: versions (only those offered count), a refusal (legacy), or
+    /// garbage.
+    #[test]
+    fn the_greeting_is_answered_with_versions_or_refused() {
+        let g: serde_json::Value = serde_json::from_str(&hello()).unwrap();
+        assert_eq!((g["schema"].as_str(), g["id"].as_u64()), (Some(HELLO), Some(0)));
+        assert_eq!(g["versions"], serde_json::json!([1, 2, 3, 4]));
+        let speaks = |line: &str| parse_hello(line.as_bytes());
+        assert_eq!(speaks(r#"{"id":0,"versions":[1,3,9]}"#), Ok(Speaks { versions: 0b101, pipeline: false, declared: Declared::NONE, level: Level::Full }));
+        assert_eq!(speaks(r#"{"id":0,"versions":[],"pipeline":true}"#), Ok(Speaks { versions: 0, pipeline: true, declared: Declared::NONE, level: Level::Full }));
+        assert_eq!(speaks(r#"{"id":0,"versions":[1],"level":"motion"}"#).map(|s| s.level), Ok(Level::Motion));
+        assert_eq!(speaks(r#"{"id":0,"error":"unsupported schema"}"#), Ok(Speaks::LEGACY));
+        for bad in ["", "[]", r#"{"id":1,"versions":[1]}"#, r#"{"id":0,"versions":1}"#, r#"{"id":0,"versions":["1"]}"#, r#"{"id":0}"#,
+            r#"{"id":0,"versions":[1],"pipeline":1}"#, r#"{"id":0,"versions":[1],"error":"x"}"#,
+            r#"{"id":0,"versions":[1],"level":"moves"}"#, r#"{"id":0,"versions":[1],"level":2}"#] {
+            assert_eq!(speaks(bad).map_err(|f| f.kind), Err(FailureKind::Garbage), "{bad}");
+        }
+        assert_eq!(Speaks { versions: 0b101, pipeline: false, declared: Declared::NONE, level: Level::Full }.list(), "1, 3");
+        let declared = speaks(r#"{"id":0,"versions":[1],"readings":{"g94.k":"start-minus-end"}}"#).unwrap().declared;
+        assert_eq!(declared.pairs(), vec![("g94.k", "start-minus-end")]);
+        // Both additions of the greeting together: a level and readings.
+        let both = speaks(r#"{"id":0,"versions":[1],"level":"motion","readings":{"g73.c":"skip"}}"#).unwrap();
+        assert_eq!((both.level, both.declared.pairs()), (Level::Motion, vec![("g73.c", "skip")]));
+        for bad in [r#"{"id":0,"versions":[1],"readings":{"g95.k":"x"}}"#, r#"{"id":0,"versions":[1],"readings":{"g73.c":"sometimes"}}"#] {
+            let f = speaks(bad).unwrap_err();
+            assert!(f.kind == FailureKind::Garbage && f.message.contains("\"readings\""), "{f}");
+        }
+        assert!(!Speaks::LEGACY.speaks(5) && Speaks::LEGACY.speaks(4) && !Speaks::LEGACY.speaks(0));
+        assert_eq!((version_of(SCHEMA_3), version_of(HELLO)), (Some(3), None));
+    }
+
+    #[test]
+    fn a_missing_command_is_a_spawn_failure_every_time() {
+        let e = CandidateEngine::new("/nonexistent/candidate --x", Limits::default()).unwrap();
+        for _ in 0..2 {
+            let f = e.try_expand(b"G0 X1", &Config::default()).unwrap_err();
+            assert_eq!(f.kind, FailureKind::Spawn, "{f}");
+        }
+        assert_eq!(e.starts(), 0);
+    }
+}

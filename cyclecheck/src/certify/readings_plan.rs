@@ -1,0 +1,121 @@
+//! The declared readings a certification run judges its cases under ([`Plan`]): in process
+//! (spec vs the production expander) each generated case draws its own, so both engines run
+//! under every value; a candidate run judges every case under the readings the candidate
+//! declares in its greeting, merged with `--reading` (the letter for the others).
+
+use cycle_kernel::readings::{self, Counts, Declared, Pins};
+use cycle_vocab::{Config, Readings};
+use serde_json::{json, Value};
+
+/// How a run's cases get their readings.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Plan {
+    /// Drawn per generated case (`cycle_kernel::gen::drawn`), the corpus programs at the letter; the
+    /// `--reading` pins fixed in every case.
+    Drawn { pinned: Pins },
+    /// Every case under `readings`: what the candidate `declared`, and the pins.
+    Declared { readings: Readings, declared: Vec<(&'static str, &'static str)>, pinned: Pins },
+}
+
+impl Plan {
+    /// The plan of an in-process run.
+    pub fn drawn(pinned: Pins) -> Plan {
+        Plan::Drawn { pinned }
+    }
+
+    /// The plan of a candidate run: its greeting's declaration (`None`: it could not be greeted,
+    /// nothing declared) merged with the pins; a pin that contradicts the declaration is an
+    /// error naming both.
+    pub fn declared(declared: Option<Declared>, pinned: Pins) -> Result<Plan, String> {
+        let d = declared.unwrap_or(Declared::NONE);
+        let readings = readings::settle(&d, &pinned)?;
+        Ok(Plan::Declared { readings, declared: d.pairs(), pinned })
+    }
+
+    /// Sets a case's readings: all of them for a candidate run, the pinned ones otherwise.
+    pub fn apply(&self, config: &mut Config) {
+        match self {
+            Plan::Drawn { pinned } => config.readings = pinned.apply(config.readings),
+            Plan::Declared { readings, .. } => config.readings = *readings,
+        }
+    }
+
+    /// One line for a report: `readings: g94.k=start-minus-end, others the letter` or
+    /// `readings: drawn per case`.
+    pub fn line(&self) -> String {
+        match self {
+            Plan::Declared { readings, .. } => format!("readings: {}", readings::line(readings)),
+            Plan::Drawn { pinned } if pinned.is_empty() => "readings: drawn per case".to_string(),
+            Plan::Drawn { pinned } => {
+                let pins: Vec<String> = pinned.0.iter().map(|(n, v)| format!("{n}={v}")).collect();
+                format!("readings: drawn per case, but {} (--reading)", pins.join(", "))
+            }
+        }
+    }
+
+    /// The plan as `parameters.readings` of `evidence.json` (equal in the shards of one run).
+    pub fn json(&self) -> Value {
+        match self {
+            Plan::Drawn { pinned } => json!({ "mode": "drawn", "pinned": pinned.map() }),
+            Plan::Declared { readings, declared, pinned } => json!({
+                "mode": "declared",
+                "values": readings.pairs().iter().copied().collect::<std::collections::BTreeMap<_, _>>(),
+                "declared_by_candidate": declared.iter().copied().collect::<std::collections::BTreeMap<_, _>>(),
+                "pinned": pinned.map(),
+            }),
+        }
+    }
+
+    /// The top-level `readings` of `evidence.json`: the plan, its line, and the cases run under
+    /// each value of each reading.
+    pub fn evidence(&self, counts: &Counts) -> Value {
+        let mut v = self.json();
+        v["line"] = json!(self.line());
+        v["cases"] = counts.json();
+        v
+    }
+
+    /// The plan read back from `parameters.readings` (`merge`); a bundle without one ran
+    /// before the readings: drawn nothing, the letter.
+    pub fn from_json(v: &Value) -> Result<Plan, String> {
+        let pairs = |key: &str| -> Result<Vec<String>, String> {
+            Ok(v[key].as_object().into_iter().flatten().map(|(n, val)| format!("{n}={}", val.as_str().unwrap_or_default())).collect())
+        };
+        let pinned = Pins::parse(&pairs("pinned")?).map_err(|e| format!("parameters.readings.pinned: {e}"))?;
+        match v["mode"].as_str() {
+            None | Some("drawn") => Ok(Plan::Drawn { pinned }),
+            Some("declared") => {
+                let values = Pins::parse(&pairs("values")?).map_err(|e| format!("parameters.readings.values: {e}"))?;
+                let declared = Pins::parse(&pairs("declared_by_candidate")?).map_err(|e| format!("parameters.readings.declared_by_candidate: {e}"))?;
+                Ok(Plan::Declared { readings: values.apply(Readings::default()), declared: declared.0, pinned })
+            }
+            Some(m) => Err(format!("parameters.readings.mode: {m:?} is neither drawn nor declared")),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn plans_apply_name_and_read_back() {
+        let pins = Pins::parse(&["g73.c=skip"]).unwrap();
+        let drawn = Plan::drawn(pins.clone());
+        let mut c = Config { readings: readings::from_bits(1), ..Config::default() };
+        drawn.apply(&mut c);
+        assert_eq!(readings::line(&c.readings), "g94.k=start-minus-end, g73.c=skip, others the letter");
+        assert_eq!(drawn.line(), "readings: drawn per case, but g73.c=skip (--reading)");
+        let d = Declared::parse(Some(&json!({"g94.k": "start-minus-end"}))).unwrap();
+        let declared = Plan::declared(Some(d), pins).unwrap();
+        let mut c = Config { readings: readings::from_bits(0b11_1111), ..Config::default() };
+        declared.apply(&mut c);
+        assert_eq!(declared.line(), "readings: g94.k=start-minus-end, g73.c=skip, others the letter");
+        assert_eq!(declared.line(), format!("readings: {}", readings::line(&c.readings)));
+        for p in [drawn, declared, Plan::drawn(Pins::default())] {
+            assert_eq!(Plan::from_json(&p.json()), Ok(p.clone()));
+        }
+        assert!(Plan::declared(Some(d), Pins::parse(&["g94.k=end-minus-start"]).unwrap()).unwrap_err().contains("contradicts"));
+        assert_eq!(Plan::from_json(&Value::Null), Ok(Plan::drawn(Pins::default())));
+    }
+}
