@@ -47,7 +47,7 @@ impl Verdict {
 #[derive(Clone, Debug)]
 pub struct Outcome {
     pub name: String,
-    /// The cycle the program runs ([`registry::cycle_run`]).
+    /// The cycle the program runs ([`registry::sight`]).
     pub cycle: CycleRun,
     /// Events and pass headers of the reference trace.
     pub events: usize,
@@ -131,8 +131,9 @@ impl Report {
     }
 }
 
-/// Runs one case: both engines in lockstep, judged by the relation; what the reference showed.
-pub fn judge(engines: (&dyn Engine, &dyn Engine), program: &[u8], config: &Config) -> (Option<Seen>, Verdict) {
+/// Runs one case: both engines in lockstep, judged by the relation; what the reference showed,
+/// and the cycle the case runs (the judge's one read of the program).
+pub fn judge(engines: (&dyn Engine, &dyn Engine), program: &[u8], config: &Config) -> (Option<Seen>, Verdict, CycleRun) {
     let j = crate::judge::judge(engines.0, engines.1, program, config);
     let verdict = match j.result {
         CaseResult::Conform => Verdict::Conform(j.reference.as_ref().and_then(|r| r.alarm)),
@@ -141,15 +142,14 @@ pub fn judge(engines: (&dyn Engine, &dyn Engine), program: &[u8], config: &Confi
         CaseResult::Failure { engine, failure } if failure.kind == FailureKind::Panic => Verdict::Panic { engine, message: failure.message },
         CaseResult::Failure { engine, failure } => Verdict::Panic { engine, message: format!("candidate failure: {failure}") },
     };
-    (j.reference, verdict)
+    (j.reference, verdict, j.sighting.cycle)
 }
 
 /// Runs every case through both engines (`engines.0` the reference) and collects the report.
 pub fn run(engines: (&dyn Engine, &dyn Engine), cases: impl Iterator<Item = (String, Vec<u8>, Config)>) -> Report {
     let mut report = Report { engines: (engines.0.name().to_string(), engines.1.name().to_string()), ..Report::default() };
     for (name, program, config) in cases {
-        let (reference, verdict) = judge(engines, &program, &config);
-        let cycle = registry::cycle_run_until(&program, &config, reference.as_ref().and_then(|r| r.alarm.as_ref()));
+        let (reference, verdict, cycle) = judge(engines, &program, &config);
         let (events, passes) = reference.as_ref().map_or((0, 0), |r| (r.events, r.passes));
         *report.by_cycle.entry(cycle).or_default() += 1;
         let ending = match reference.as_ref().map(|t| t.alarm) {

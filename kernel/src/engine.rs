@@ -190,8 +190,8 @@ pub fn by_name(name: &str) -> Option<Box<dyn Engine>> {
 }
 
 /// Deliberately wrong engines for the harness's own tests (the kernel's, and the application's
-/// through the `wrong-engines` feature): a harness that cannot tell them from the spec is broken.
-#[cfg(any(test, feature = "wrong-engines"))]
+/// through the `test-aids` feature): a harness that cannot tell them from the spec is broken.
+#[cfg(any(test, feature = "test-aids"))]
 pub mod wrong {
     use super::Engine;
     use cycle_vocab::text::Trace;

@@ -1,22 +1,13 @@
 //! Hints for alarms whose likely cause is the configuration rather than the program: a G20/G21
 //! against the configured units (COM.UNITS), a G code of another dialect (PRJ.DIALECT,
-//! PRJ.SUPPORTED) — `cyclecheck expand` and `diff` print them under the alarm.
+//! PRJ.SUPPORTED) — `cyclecheck expand` and `diff` print them under the alarm. A hint reads the
+//! G codes of the alarm's block from the case's [`Sighting`] (the judge's one read of the
+//! program), never the program.
 
-use crate::registry::FAMILIES;
-use cycle_spec::lex;
+use crate::registry::{Sighting, FAMILIES};
 use cycle_vocab::{Alarm, Config, Dialect, Rule, Units};
-use num_traits::ToPrimitive;
 
 const DIALECTS: [(Dialect, &str); 3] = [(Dialect::Gsk, "gsk"), (Dialect::Fanuc, "fanuc"), (Dialect::Nc201, "nc201")];
-
-/// The whole-number G codes of line `line` of the program.
-fn g_codes(program: &[u8], line: u32) -> Vec<u64> {
-    let Some(Ok(block)) = lex::blocks(program).find(|b| b.as_ref().map_or(true, |b| b.line >= line)) else { return Vec::new() };
-    if block.line != line {
-        return Vec::new();
-    }
-    block.g_codes().filter(|g| !g.point && !g.negative).filter_map(|g| g.mantissa().to_u64()).collect()
-}
 
 /// The dialects other than the configured one under which G code `g` means something: a cycle
 /// family's code, or G90/G91 (absolute/incremental) under `nc201`.
@@ -29,12 +20,13 @@ fn dialects_of(g: u64, config: &Config) -> Vec<&'static str> {
         .collect()
 }
 
-/// A hint for `alarm`, when its likely cause is the configuration.
-pub fn hint(program: &[u8], config: &Config, alarm: &Alarm) -> Option<String> {
+/// A hint for `alarm`, when its likely cause is the configuration; `sighting` is the program
+/// as read against that alarm ([`crate::registry::sight`]).
+pub fn hint(config: &Config, alarm: &Alarm, sighting: &Sighting) -> Option<String> {
     if alarm.word != Some(b'G') {
         return None;
     }
-    let codes = g_codes(program, alarm.line);
+    let codes = &sighting.alarm_codes;
     match alarm.rule {
         Rule::ComUnits => {
             let (g, units) = match config.grid.units {
@@ -59,7 +51,8 @@ mod tests {
 
     fn hint_for(program: &str, config: &Config) -> Option<String> {
         let t = cycle_spec::expand(program.as_bytes(), config);
-        hint(program.as_bytes(), config, &t.alarm.expect("an alarm"))
+        let alarm = t.alarm.expect("an alarm");
+        hint(config, &alarm, &crate::registry::sight(program.as_bytes(), config, Some(&alarm)))
     }
 
     #[test]

@@ -6,9 +6,14 @@
 //! cut: both engines run to their ends.
 //!
 //! A panic of either engine is that engine's [`Failure`], never a pass.
+//!
+//! The judge also reads the program once ([`registry::sight`]), when the reference's run has
+//! ended: the cycle the case runs and the G codes of the alarm's block travel in its result
+//! ([`Judged::sighting`]), for the per-cycle counts and the hints ([`crate::hint`]).
 
 use crate::conformance::{Divergence, Lockstep};
 use crate::engine::{stream_of, Engine, Failure, FailureKind};
+use crate::registry::{self, Sighting};
 use cycle_vocab::text::Trace;
 use cycle_vocab::{Alarm, Config, Event, Rule};
 use std::collections::BTreeSet;
@@ -85,6 +90,16 @@ pub struct Judged {
     /// Both traces when kept ([`judge_keeping`]): the reference's, and the candidate's when it
     /// produced one.
     pub traces: Option<(Trace, Option<Trace>)>,
+    /// The program as read once against the reference's alarm (without a reference trace, to
+    /// its end): the cycle it runs, the alarm block's G codes.
+    pub sighting: Sighting,
+}
+
+impl Judged {
+    /// The reference's alarm, when it ran and alarmed.
+    pub fn alarm(&self) -> Option<&Alarm> {
+        self.reference.as_ref().and_then(|r| r.alarm.as_ref())
+    }
 }
 
 fn panic_message(p: Box<dyn std::any::Any + Send>) -> String {
@@ -131,8 +146,11 @@ fn failure(engine: &dyn Engine, failure: Failure) -> CaseResult {
 /// The reference alone, after the candidate failed with `f`.
 fn candidate_failed(reference: &dyn Engine, candidate: &dyn Engine, program: &[u8], config: &Config, keep: bool, f: Failure) -> Judged {
     match observe(reference, program, config, keep) {
-        Err(rf) => Judged { reference: None, result: failure(reference, rf), traces: None },
-        Ok((seen, trace)) => Judged { reference: Some(seen), result: failure(candidate, f), traces: trace.map(|t| (t, None)) },
+        Err(rf) => Judged { reference: None, result: failure(reference, rf), traces: None, sighting: registry::sight(program, config, None) },
+        Ok((seen, trace)) => {
+            let sighting = registry::sight(program, config, seen.alarm.as_ref());
+            Judged { reference: Some(seen), result: failure(candidate, f), traces: trace.map(|t| (t, None)), sighting }
+        }
     }
 }
 
@@ -166,7 +184,7 @@ fn run(reference: &dyn Engine, candidate: &dyn Engine, program: &[u8], config: &
         })
     });
     let alarm = match pushed {
-        Err(f) => return Judged { reference: None, result: failure(reference, f), traces: None },
+        Err(f) => return Judged { reference: None, result: failure(reference, f), traces: None, sighting: registry::sight(program, config, None) },
         Ok(alarm) => alarm,
     };
     if let Some(message) = candidate_panic {
@@ -179,7 +197,8 @@ fn run(reference: &dyn Engine, candidate: &dyn Engine, program: &[u8], config: &
         Ok(Err(d)) => CaseResult::Diverge(Box::new(d)),
     };
     let traces = kept.map(|events| (Trace { grid: config.grid, events, alarm }, candidate_trace));
-    Judged { reference: Some(seen), result, traces }
+    let sighting = registry::sight(program, config, alarm.as_ref());
+    Judged { reference: Some(seen), result, traces, sighting }
 }
 
 #[cfg(test)]
@@ -215,5 +234,26 @@ mod tests {
         assert_eq!(j.reference.map(|s| s.events), Some(1));
         let j = judge(&Panics, &SpecEngine, b"G0 X1", &Config::default());
         assert!(j.reference.is_none() && matches!(j.result, CaseResult::Failure { ref engine, .. } if engine == "panics"));
+    }
+
+    /// The judge reads the program once, beside the two engines' own runs, and its result
+    /// carries the cycle and the alarm block's codes that the counts and hints use — whether
+    /// the case conforms, the candidate panics or the reference fails.
+    #[test]
+    fn a_judged_case_reads_its_program_once() {
+        let c = Config::default();
+        let alarmed = b"G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\nG20 X58\n";
+        for (reference, candidate) in [(&SpecEngine as &dyn Engine, &ImplEngine as &dyn Engine), (&SpecEngine, &Panics), (&Panics, &SpecEngine)] {
+            let before = registry::sightings();
+            let j = judge(reference, candidate, alarmed, &c);
+            assert_eq!(registry::sightings() - before, 1, "{} against {}", reference.name(), candidate.name());
+            assert_eq!(j.sighting.cycle, registry::CycleRun::Family(registry::find("g92").unwrap()));
+            if j.reference.is_some() {
+                assert_eq!((j.alarm().map(|a| a.line), j.sighting.alarm_codes.as_slice()), (Some(3), &[20][..]));
+            }
+        }
+        let before = registry::sightings();
+        let report = crate::campaign::run((&SpecEngine, &ImplEngine), crate::corpus::cases());
+        assert_eq!(registry::sightings() - before, report.cases());
     }
 }

@@ -93,7 +93,7 @@ fn covered(options: &Options, program: &[u8], config: &Config) -> bool {
         return true;
     }
     let alarm = observe(&SpecEngine, program, config, false).ok().and_then(|(seen, _)| seen.alarm);
-    options.covers(registry::cycle_run_until(program, config, alarm.as_ref()))
+    options.covers(registry::sight(program, config, alarm.as_ref()).cycle)
 }
 
 /// The cases of a run, in order, drawn as they are asked for.

@@ -198,7 +198,7 @@ pub enum Origin {
 pub struct CaseRecord {
     pub name: String,
     pub origin: Origin,
-    /// The cycle the program runs ([`registry::cycle_run`]).
+    /// The cycle the program runs (the judge's read of it, [`registry::sight`]).
     pub cycle: CycleRun,
     pub program: Vec<u8>,
     pub config: Config,
@@ -215,8 +215,8 @@ pub struct CaseRecord {
 
 impl CaseRecord {
     fn new(p: &cases::Pending, j: Judged) -> CaseRecord {
-        let alarm = j.reference.as_ref().and_then(|r| r.alarm);
-        let cycle = registry::cycle_run_until(&p.program, &p.config, alarm.as_ref());
+        let alarm = j.alarm().copied();
+        let cycle = j.sighting.cycle;
         let (events, rules, ending) = match j.reference {
             Some(r) => (r.events, r.rules, alarm.as_ref().map_or_else(|| "clean".to_string(), conformance::alarm_short)),
             None => (0, BTreeSet::new(), "reference failed".to_string()),

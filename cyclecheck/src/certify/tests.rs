@@ -34,3 +34,13 @@ fn a_run_keeps_counts_not_cases() {
     assert!(run.corpus.iter().all(|r| r.traces.is_some()));
     assert!(run.illustrated().get(&Rule::G92Example).is_some_and(|&n| n == 1));
 }
+
+/// A certification run reads each judged case's program once (the judge's sighting, which the
+/// record's cycle and the per-cycle counts take).
+#[test]
+fn a_run_reads_each_program_once() {
+    let o = Options { cases: 12, ..Options::default() };
+    let before = registry::sightings();
+    let run = run(&o, &mut Vec::new(), &mut |_| {}).unwrap();
+    assert_eq!(registry::sightings() - before, run.cases(), "{}", run.summary());
+}

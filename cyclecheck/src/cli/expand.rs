@@ -16,10 +16,10 @@ use cycle_vocab::{Alarm, Config};
 use std::io::Write as _;
 use std::ops::ControlFlow;
 
-/// The alarm on stderr, with a hint when the configuration is the likely cause.
-fn report_alarm(program: &[u8], config: &Config, alarm: &Alarm) {
+/// The alarm on stderr, with its hint when the configuration is the likely cause.
+fn report_alarm(alarm: &Alarm, hint: Option<&str>) {
     eprintln!("{}", alarm_summary(alarm));
-    if let Some(h) = hint::hint(program, config, alarm) {
+    if let Some(h) = hint {
         eprintln!("{h}");
     }
 }
@@ -41,7 +41,8 @@ pub fn expand(a: &ExpandArgs) -> Result<u8, Bad> {
     let _ = w.finish(alarm.as_ref());
     match alarm {
         Some(a) => {
-            report_alarm(&program, &config, &a);
+            let hint = hint::hint(&config, &a, &registry::sight(&program, &config, Some(&a)));
+            report_alarm(&a, hint.as_deref());
             Ok(2)
         }
         None => Ok(0),
@@ -77,14 +78,14 @@ pub fn diff(a: &DiffArgs) -> Result<u8, Bad> {
     for file in &a.files {
         let program = read_program(file)?;
         let j = judge::judge(&SpecEngine, candidate.as_ref(), &program, &config);
-        let alarm = j.reference.as_ref().and_then(|r| r.alarm);
-        let cycle = registry::cycle_run_until(&program, &config, alarm.as_ref());
+        let alarm = j.alarm().copied();
+        let cycle = j.sighting.cycle;
         *by_cycle.entry(cycle).or_insert(0) += 1;
         let mut out = String::new();
         if several && !json {
             out.push_str(&format!("== {file} ({})\n", cycle.label()));
         }
-        let hint = alarm.and_then(|a| hint::hint(&program, &config, &a));
+        let hint = alarm.and_then(|a| hint::hint(&config, &a, &j.sighting));
         // The level the candidate declared in its greeting (full for the production expander).
         let level = candidate.level();
         let mut doc = match &j.result {
@@ -129,7 +130,7 @@ pub fn diff(a: &DiffArgs) -> Result<u8, Bad> {
             emit(&out);
         }
         if let (CaseResult::Conform, Some(alarm)) = (&j.result, &alarm) {
-            report_alarm(&program, &config, alarm);
+            report_alarm(alarm, hint.as_deref());
         }
     }
     if several && !json {

@@ -164,7 +164,7 @@ pub fn parse_blocks(data: &[u8]) -> Result<(), String> {
     }
     // Both engines: no panic, a rejection is an alarm on a line of the program, and they agree.
     for config in parse_configs() {
-        let (reference, verdict) = judge((&SpecEngine, &ImplEngine), data, &config);
+        let (reference, verdict, _) = judge((&SpecEngine, &ImplEngine), data, &config);
         if let Some(a) = reference.and_then(|t| t.alarm) {
             if !on_a_line(a.line) {
                 return Err(format!("alarm {a:?} names line {} of a {lines}-line program", a.line));
@@ -189,7 +189,7 @@ pub(crate) fn verdict_ok(verdict: Verdict, program: &[u8], config: &Config) -> R
 /// conformance relation.
 pub fn diff_spec_impl(data: &[u8]) -> Result<(), String> {
     let case = CycleInput::from_bytes(data).case();
-    let (_, verdict) = judge((&SpecEngine, &ImplEngine), &case.program, &case.config);
+    let (_, verdict, _) = judge((&SpecEngine, &ImplEngine), &case.program, &case.config);
     verdict_ok(verdict, &case.program, &case.config).map_err(|e| format!("family {}\n{e}", case.family))
 }
 

@@ -31,7 +31,7 @@ pub fn observe(target: Target, program: &[u8], config: &Config) -> Option<(Expec
             (expect, report)
         }
         Target::DiffSpecImpl => {
-            let (reference, verdict) = judge((&SpecEngine, &ImplEngine), program, config);
+            let (reference, verdict, _) = judge((&SpecEngine, &ImplEngine), program, config);
             let report = verdict_ok(verdict, program, config);
             let ends = reference.map(|t| t.alarm.map_or(Ending::Clean, Ending::Alarm));
             (Expect { conform: Some(report.is_ok()), reference_ends: ends, ..Expect::default() }, report)
