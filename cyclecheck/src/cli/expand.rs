@@ -12,7 +12,7 @@ use cycle_kernel::judge::{self, CaseResult};
 use cyclecheck::candidate::CandidateEngine;
 use cycle_kernel::{hint, readings, registry};
 use cycle_vocab::text::Trace;
-use cycle_vocab::{Alarm, Config};
+use cycle_vocab::Alarm;
 use std::io::Write as _;
 use std::ops::ControlFlow;
 

@@ -100,7 +100,7 @@ pub fn sight(program: &[u8], config: &Config, alarm: Option<&Alarm>) -> Sighting
         }
         // Past a decided cycle, only the alarm's block is still wanted (a subprogram after M30
         // may hold it).
-        if cycle.is_some() && alarm_line.map_or(true, |line| block.line >= line) {
+        if cycle.is_some() && !matches!(alarm_line, Some(line) if block.line < line) {
             break;
         }
     }
