@@ -1,5 +1,6 @@
-//! Tests of `mod.rs`.
+//! Tests of the run and its options.
 use super::*;
+use cycle_kernel::registry::{self, FAMILIES};
 
 #[test]
 fn cycles_option() {
