@@ -93,6 +93,8 @@ fn block_text(line: u32, words: impl Iterator<Item = (u8, bool, String, u32, boo
 }
 
 /// The reference lexer's reading of a program (`cycle_spec::lex`), block by block.
+// The fuzz body that checks the lexers themselves: its subject is the reading.
+#[allow(clippy::disallowed_methods)]
 fn spec_reading(data: &[u8]) -> Vec<Read> {
     cycle_spec::lex::blocks(data)
         .map(|b| {

@@ -79,6 +79,7 @@ pub struct Sighting {
 ///
 /// The blocks are read with the reference's lexer (`cycle_spec::lex`); this is the one place
 /// that reads them for the harness.
+#[allow(clippy::disallowed_methods)] // the one read
 pub fn sight(program: &[u8], config: &Config, alarm: Option<&Alarm>) -> Sighting {
     count();
     let alarm_line = alarm.map(|a| a.line);
