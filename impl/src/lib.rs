@@ -66,6 +66,8 @@ mod g73;
 pub mod g74;
 mod g83;
 mod g84;
+/// The cycle families and their G codes: the one place impl's cycle codes live.
+pub mod family;
 pub mod g162;
 /// Public (hidden) only so that the proof harnesses (`cycle-proofs`) can drive one G90/G94 cycle
 /// below the lexer; not part of the API.

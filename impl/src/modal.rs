@@ -4,6 +4,7 @@
 //! (3) values alphabetically; (4) missing words; (5) the cycle's own checks.
 
 use crate::config::Params;
+use crate::family::{self, FamilyCodes, Lookup};
 use crate::fixed::sat;
 use crate::g74::PeckCode;
 use crate::g90::{CutCode, CutState};
@@ -90,6 +91,8 @@ pub enum Comp {
 struct Codes {
     /// The block's motion/cycle code, if any.
     motion: Option<u64>,
+    /// The family that code selects ([`family::FAMILIES`]), if any.
+    family: Option<&'static FamilyCodes>,
     /// M02 or M30: nothing after this block is read.
     end: bool,
     /// NC201.ABSINC: G90 (`Some(false)`) or G91 (`Some(true)`) under nc201.
@@ -182,6 +185,41 @@ struct Vals {
     depth: Option<i64>,
 }
 
+/// How a block whose G code `code` selects family `f` is read, by the family's name (the one
+/// map from [`family::FAMILIES`] to the interpreter); `None` for a family it does not know.
+fn cycle_kind(f: &FamilyCodes, code: u64, b: &Block, axis: bool) -> Option<Kind> {
+    // G71.UW, G73.FORMAT: a block with P or Q is the second block.
+    let pq = || b.has(b'P') || b.has(b'Q');
+    // G74.FORMAT, G75.FORMAT: any of X U Z W P Q makes the second block.
+    let peck_second = || b.mask() & const { letter_mask(b"PQUWXZ") } != 0;
+    Some(match f.name {
+        "g92" => Kind::G92,
+        "g76" | "f76" if axis => Kind::Second(Code::G76),
+        "g76" | "f76" => Kind::First(Code::G76),
+        "g78" if axis => Kind::Second(Code::G78),
+        "g78" => Kind::First(Code::G78),
+        "g32" => Kind::Thread(*ThreadCode::ALL.get(f.position(code)?)?),
+        "g162" => Kind::G162,
+        "g90" => Kind::Cut(CutCode::G90),
+        "g94" => Kind::Cut(CutCode::G94),
+        "g70" => Kind::G70,
+        "g71" if pq() => Kind::RoughSecond(Axis::G71),
+        "g71" => Kind::RoughFirst(Axis::G71),
+        "g72" if pq() => Kind::RoughSecond(Axis::G72),
+        "g72" => Kind::RoughFirst(Axis::G72),
+        // G73.FORMAT: I, K or D in the second block makes format (b).
+        "g73" if pq() => Kind::PatternSecond(b.has(b'I') || b.has(b'K') || b.has(b'D')),
+        "g73" => Kind::PatternFirst,
+        "g74" if peck_second() => Kind::PeckSecond(PeckCode::G74),
+        "g74" => Kind::PeckFirst(PeckCode::G74),
+        "g75" if peck_second() => Kind::PeckSecond(PeckCode::G75),
+        "g75" => Kind::PeckFirst(PeckCode::G75),
+        "g83" => Kind::G83,
+        "g84" => Kind::G84,
+        _ => return None,
+    })
+}
+
 /// Words every block accepts (no motion effect).
 const COMMON: u32 = letter_mask(b"MNOST");
 
@@ -261,7 +299,7 @@ impl Machine {
         *run = Run::Idle;
         let line = b.line;
         let at = |letter: u8| At { letter, line };
-        let Codes { motion, end, absinc, g80, g96, sub } = self.codes(b, prog.in_subprogram)?;
+        let Codes { motion, family, end, absinc, g80, g96, sub } = self.codes(b, prog.in_subprogram)?;
         // G84.FORMAT: G80 ends rigid tapping, then an M29 of this block arms it.
         self.rigid = (self.rigid && !g80) || b.get(b'M').is_some_and(|m| m.is(29));
         // G96.SMAX: the maximum must come from an earlier block.
@@ -272,42 +310,16 @@ impl Machine {
         } else {
             b.has(b'X') || b.has(b'U') || b.has(b'Z') || b.has(b'W')
         };
-        let kind = match motion {
-            Some(76) if axis => Kind::Second(Code::G76),
-            Some(76) => Kind::First(Code::G76),
-            Some(78) if axis => Kind::Second(Code::G78),
-            Some(78) => Kind::First(Code::G78),
-            Some(92) => Kind::G92,
-            Some(32) => Kind::Thread(ThreadCode::G32),
-            Some(33) => Kind::Thread(ThreadCode::G33),
-            Some(34) => Kind::Thread(ThreadCode::G34),
-            Some(162) => Kind::G162,
-            Some(90) => Kind::Cut(CutCode::G90),
-            Some(94) => Kind::Cut(CutCode::G94),
-            Some(50) => Kind::G50,
-            Some(70) => Kind::G70,
-            // G71.UW: a block with P or Q is the second block.
-            Some(71) if b.has(b'P') || b.has(b'Q') => Kind::RoughSecond(Axis::G71),
-            Some(71) => Kind::RoughFirst(Axis::G71),
-            Some(72) if b.has(b'P') || b.has(b'Q') => Kind::RoughSecond(Axis::G72),
-            Some(72) => Kind::RoughFirst(Axis::G72),
-            // G73.FORMAT: P or Q makes the second block; I, K or D format (b).
-            Some(73) if b.has(b'P') || b.has(b'Q') => {
-                Kind::PatternSecond(b.has(b'I') || b.has(b'K') || b.has(b'D'))
-            }
-            Some(73) => Kind::PatternFirst,
-            // G74.FORMAT, G75.FORMAT: any of X U Z W P Q makes the second block.
-            Some(74) if b.mask() & const { letter_mask(b"PQUWXZ") } != 0 => Kind::PeckSecond(PeckCode::G74),
-            Some(74) => Kind::PeckFirst(PeckCode::G74),
-            Some(75) if b.mask() & const { letter_mask(b"PQUWXZ") } != 0 => Kind::PeckSecond(PeckCode::G75),
-            Some(75) => Kind::PeckFirst(PeckCode::G75),
-            Some(83) => Kind::G83,
-            Some(84) => Kind::G84,
-            Some(2) => Kind::Arc(true),
-            Some(3) => Kind::Arc(false),
-            Some(1) => Kind::Feed,
-            Some(_) => Kind::Rapid,
-            None => match self.mode {
+        let kind = match (family, motion) {
+            (Some(f), Some(code)) => cycle_kind(f, code, b, axis).ok_or_else(|| {
+                Alarm::new(AlarmCode::UnsupportedCode, Some(b'G'), Rule::PrjSupported, line)
+            })?,
+            (_, Some(50)) => Kind::G50,
+            (_, Some(2)) => Kind::Arc(true),
+            (_, Some(3)) => Kind::Arc(false),
+            (_, Some(1)) => Kind::Feed,
+            (_, Some(_)) => Kind::Rapid,
+            (_, None) => match self.mode {
                 Mode::Rapid => Kind::Rapid,
                 Mode::Feed => Kind::Feed,
                 Mode::G92 => Kind::G92,
@@ -413,6 +425,7 @@ impl Machine {
         let dialect = self.config.dialect;
         let nc201 = dialect == Dialect::Nc201;
         let mut motion = None;
+        let mut family = None;
         let mut motions = 0u32;
         let mut absinc = None;
         let mut absincs = 0u32;
@@ -425,17 +438,12 @@ impl Machine {
             }
             match g.mantissa {
                 0 | 1 => {}
-                2 | 3 if !nc201 => {}
-                // M003 / M001 / M002 codes are not defined for the M004 controller, and G162 only
-                // for it (PRJ.DIALECT).
-                92 | 76 | 32 | 33 | 34 | 90 | 94 | 50 | 70 | 71 | 72 | 73 | 74 | 75 | 83 | 84 if !nc201 => {}
+                2 | 3 | 50 if !nc201 => {}
                 // G80 (`Rule::G80`, no motion): ends an armed M29.
                 80 if !nc201 => {
                     g80 = true;
                     continue;
                 }
-                78 if dialect == Dialect::Gsk => {}
-                162 if nc201 => {}
                 40..=42 | 96 | 98 if !nc201 => {
                     tnrc |= matches!(g.mantissa, 40..=42);
                     // G98: feed per minute (G84.FORMAT's lead).
@@ -449,12 +457,11 @@ impl Machine {
                 }
                 // G163 (M004's tapping / die cycle): named, its motion not given.
                 163 if nc201 => return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::G163)),
-                // Under nc201 G90 is the absolute mode (below) and G94 is not defined; nor are the
-                // codes of the contour cycles (M003).
-                32 | 33 | 34 | 76 | 78 | 92 | 94 | 162 => return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjDialect)),
-                2 | 3 | 41 | 42 | 50 | 70 | 71 | 72 | 73 | 74 | 75 | 80 | 83 | 84 | 96 | 98 if nc201 => {
+                // M003's program words are not defined for the M004 controller (PRJ.DIALECT).
+                2 | 3 | 41 | 42 | 50 | 80 | 96 | 98 if nc201 => {
                     return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjDialect))
                 }
+                // Under nc201 G90 is the absolute mode, no cycle (NC201.ABSINC).
                 90 | 91 if nc201 => {
                     absincs += 1;
                     absinc = Some(g.mantissa == 91);
@@ -475,7 +482,13 @@ impl Machine {
                     continue;
                 }
                 18 | 20 | 21 | 40 => continue,
-                _ => return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjSupported)),
+                // A cycle code: the family it selects under this dialect (family::FAMILIES), a
+                // cycle code of another dialect (PRJ.DIALECT), or no code at all.
+                code => match family::lookup(code, dialect) {
+                    Lookup::Selects(f) => family = Some(f),
+                    Lookup::OtherDialect => return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjDialect)),
+                    Lookup::None => return Err(g_alarm(AlarmCode::UnsupportedCode, Rule::PrjSupported)),
+                },
             }
             motions += 1;
             motion = Some(g.mantissa);
@@ -509,7 +522,7 @@ impl Machine {
         if tnrc || b.has(b'T') {
             self.compensation(b, motion)?;
         }
-        Ok(Codes { motion, end, absinc, g80, g96, sub })
+        Ok(Codes { motion, family, end, absinc, g80, g96, sub })
     }
 
     /// TNRC.NOARC, TNRC.SWITCH, TNRC.RADIUS (check step 2, after the two-motion-codes conflict):

@@ -13,6 +13,9 @@ pub enum ThreadCode {
 }
 
 impl ThreadCode {
+    /// Every code, in the order of the `g32` family's codes (`family::FAMILIES`).
+    pub const ALL: [ThreadCode; 3] = [ThreadCode::G32, ThreadCode::G33, ThreadCode::G34];
+
     pub const fn rule(self) -> Rule {
         match self {
             ThreadCode::G32 => Rule::G32,
