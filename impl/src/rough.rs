@@ -563,3 +563,6 @@ pub fn cut_on(axis: Axis, kind: Kind, from: (i64, i64), to: (i64, i64), centre: 
         }
     }
 }
+
+#[cfg(test)]
+mod tests;

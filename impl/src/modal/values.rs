@@ -2,7 +2,8 @@
 //! COM.UNITS, COM.LEAD, F76.MICRONS, G76.MODE, G78.MODE, G78.DEPTHMODE, G76.FINISH, F76.FORMAT,
 //! NC201.XMODE, the G162 word table, G33, G34, G90.FORMAT, G94.FORMAT).
 
-use super::{Kind, Machine, Vals, FANUC_ANGLES};
+use super::{Kind, Machine, Vals};
+use crate::config::FANUC_ANGLES;
 use crate::g162::max_lead;
 use crate::g90::CutCode;
 use crate::multipass::Code;

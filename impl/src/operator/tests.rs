@@ -274,7 +274,7 @@ fn out_of_scope() {
     let g32 = "G0 X40 Z5\nG32 X40 Z-20 F2\n";
     let u32 = plain(g32, Config::default());
     assert_eq!(run(g32, Config::default(), &[reset(1, 1, 2)]), cat(&[&u32[..1], &[op(Rule::OpScope, 2)]]));
-    let g71 = include_str!("../../corpus/g71_example.nc");
+    let g71 = include_str!("../../../corpus/g71_example.nc");
     let u = plain(g71, Config::default());
     let got = run(g71, Config::default(), &[hold(3, 1, 2)]);
     assert_eq!(got, cat(&[&u[..3], &[op(Rule::OpScope, 8)]]));
@@ -357,3 +357,5 @@ fn random_scripts_end() {
         assert!(t.events.len() as u64 <= (n_u + 8) * (count + 1), "{src} {actions:?}");
     }
 }
+
+mod cycles;

@@ -3,7 +3,7 @@
 //! segment ② (G162.X), and A on the 0.1° grid (G162.A).
 extern crate std;
 
-use crate::g162_tests::continuous;
+use super::programs::continuous;
 use crate::tests::{expand, moves};
 use cycle_vocab::text::Trace;
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Move, MoveKind, Rule};

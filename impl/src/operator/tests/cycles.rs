@@ -4,7 +4,7 @@
 //! repeated.
 extern crate std;
 
-use crate::operator_tests::{bit6, cat, hold, lines, nc201, plain, reset, run, single, strs, with, EXAMPLE};
+use super::{bit6, cat, hold, lines, nc201, plain, reset, run, single, strs, with, EXAMPLE};
 use crate::tests::{expand, xorshift};
 use cycle_vocab::{Action, Config, Event};
 use std::format;

@@ -4,7 +4,7 @@
 //! iterator.
 extern crate std;
 
-use crate::contour_tests::assert_fill_agrees;
+use crate::tests::assert_fill_agrees;
 use crate::tests::{expand, moves, passes};
 use cycle_vocab::readings::G73C;
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Move, MoveKind, Rule};

@@ -191,11 +191,11 @@ fn thread_zref_right_flank_coincides() {
     let groove = with(|c| c.readings.thread_zref = ThreadZRef::Groove);
     let fanuc_groove = Config { readings: groove.readings, ..fanuc() };
     for (src, c, g) in [
-        (include_str!("../../corpus/f76_ex1_microns.nc"), fanuc(), fanuc_groove),
-        (include_str!("../../corpus/f76_ex1.nc"), Config::default(), groove),
-        (include_str!("../../corpus/f76_ex2.nc"), Config::default(), groove),
-        (include_str!("../../tests/programs/g76_mode0.nc"), Config::default(), groove),
-        (include_str!("../../tests/programs/g78_mode2.nc"), Config::default(), groove),
+        (include_str!("../../../corpus/f76_ex1_microns.nc"), fanuc(), fanuc_groove),
+        (include_str!("../../../corpus/f76_ex1.nc"), Config::default(), groove),
+        (include_str!("../../../corpus/f76_ex2.nc"), Config::default(), groove),
+        (include_str!("../../../tests/programs/g76_mode0.nc"), Config::default(), groove),
+        (include_str!("../../../tests/programs/g78_mode2.nc"), Config::default(), groove),
     ] {
         let (a, b) = (expand(src, c), expand(src, g));
         assert_eq!(a.alarm, None, "{src}");
@@ -203,7 +203,7 @@ fn thread_zref_right_flank_coincides() {
         assert_eq!(a, b, "{src}");
     }
     // Internal threads (σ = +1) too, and a mode that differs (G76 e = 1) does differ.
-    let src = include_str!("../../tests/programs/g76_internal.nc");
+    let src = include_str!("../../../tests/programs/g76_internal.nc");
     assert_eq!(expand(src, Config::default()), expand(src, groove));
     assert_ne!(pass_starts(false, 1, Config::default()).0, pass_starts(false, 1, groove).0);
 }

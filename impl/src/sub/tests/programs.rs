@@ -3,7 +3,7 @@
 //! block's line, contours within their own program, and every alarm with its word and rule.
 extern crate std;
 
-use crate::contour_tests::assert_fill_agrees;
+use crate::tests::assert_fill_agrees;
 use crate::tests::{expand, moves};
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Move, Params, Rule};
 use std::format;

@@ -12,7 +12,7 @@ use crate::g83;
 use crate::g84;
 use crate::g74::{self, PeckCode};
 use crate::run::Run;
-use crate::Program;
+use super::Program;
 use cycle_vocab::{Alarm, AlarmCode, Rule};
 use cycle_vocab::readings::{G73C, G75Relief};
 

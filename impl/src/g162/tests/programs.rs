@@ -93,7 +93,7 @@ fn manual_split_on_both_grids() {
 /// (the long axis: 50 > 10), with the taper W20 on diameter over segment ②.
 #[test]
 fn manual_cone() {
-    let t = expand(include_str!("../../corpus/g162_cone.nc"), nc201());
+    let t = expand(include_str!("../../../../corpus/g162_cone.nc"), nc201());
     assert_eq!(t.alarm, None);
     let th = threads(&t);
     assert!(th.iter().all(|m| m.feed == 19_600 && m.lead_change == 0));
@@ -323,7 +323,7 @@ fn g162_check_order() {
 #[test]
 fn thread_moves() {
     let c = Config::default();
-    let t = expand(include_str!("../../tests/programs/g32_g33_g34.nc"), c);
+    let t = expand(include_str!("../../../../tests/programs/g32_g33_g34.nc"), c);
     assert_eq!(t.alarm, None);
     let th = threads(&t);
     assert_eq!(th[0], Move::thread(30_000, -20_000, 20_000, 0, Rule::G32));
@@ -556,12 +556,12 @@ fn no_panic_on_random_g162_and_thread_moves() {
 #[test]
 fn g162_programs_expand() {
     for (name, src) in [
-        ("straight", include_str!("../../tests/programs/g162_straight.nc")),
-        ("taper", include_str!("../../tests/programs/g162_taper.nc")),
-        ("multistart", include_str!("../../tests/programs/g162_multistart.nc")),
-        ("variable", include_str!("../../tests/programs/g162_variable.nc")),
-        ("internal_g91", include_str!("../../tests/programs/g162_internal_g91.nc")),
-        ("cone", include_str!("../../corpus/g162_cone.nc")),
+        ("straight", include_str!("../../../../tests/programs/g162_straight.nc")),
+        ("taper", include_str!("../../../../tests/programs/g162_taper.nc")),
+        ("multistart", include_str!("../../../../tests/programs/g162_multistart.nc")),
+        ("variable", include_str!("../../../../tests/programs/g162_variable.nc")),
+        ("internal_g91", include_str!("../../../../tests/programs/g162_internal_g91.nc")),
+        ("cone", include_str!("../../../../corpus/g162_cone.nc")),
     ] {
         let t = expand(src, nc201());
         assert_eq!(t.alarm, None, "{name}");

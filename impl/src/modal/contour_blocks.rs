@@ -11,7 +11,8 @@ use crate::lex::{letter_bit, letter_mask, Block, Blocks};
 use crate::rough::{self, Axis, Roughing};
 use crate::run::Run;
 use crate::words::At;
-use crate::{finish, Program};
+use super::Program;
+use crate::finish;
 use cycle_vocab::{Alarm, AlarmCode, Rule};
 
 /// G71.DEPTH, G71.RETRACT, G71.PARAM: the values a first block keeps for its code.

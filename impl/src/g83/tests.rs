@@ -4,7 +4,7 @@
 //! motion, and `fill` against the iterator.
 extern crate std;
 
-use crate::contour_tests::assert_fill_agrees;
+use crate::tests::assert_fill_agrees;
 use crate::tests::{expand, moves, passes};
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Dwell, Event, Move, Spindle, SpindleState, Rule};
 use std::vec::Vec;
