@@ -9,8 +9,8 @@
 //! caller's buffer, a whole start of a cycle at a time. The rules and every interpretation are those of
 //! `docs/RULES.md` and `docs/INTERPRETATION.md`; each rule-implementing function cites its ID.
 //!
-//! **Modules**, each importing only from the layers above it (no module imports from this crate
-//! root, no two modules import each other):
+//! **Modules**, in layers: a module imports only from its own layer or an earlier one, never
+//! from this crate root, and no import circle runs between modules:
 //! 1. Foundations: [`fixed`] (exact integer helpers, the tangent table), [`number`] (numbers as
 //!    written, scaled exactly), [`lex`] (the program lexer), `words` (word values and ranges),
 //!    [`config`] (parameters, the configuration and script checks), [`family`] (the cycle

@@ -87,4 +87,5 @@ fn split_properties_small() {
 }
 
 mod programs;
+mod random;
 mod readings;
