@@ -9,7 +9,7 @@ use cycle_vocab::{Alarm, Config, Event};
 /// Streaming expansion of a program: one trace event per call of `next`, the alarm last.
 ///
 /// With an operator script (`Config::operator`, OP.SCRIPT) the events are those of the
-/// interrupted run ([`operator`]): the uninterrupted stream of [`Core`] passes through the
+/// interrupted run (`operator`): the uninterrupted stream of `Core` passes through the
 /// operator layer. With an empty script the layer is never entered: one branch per event.
 pub struct Expander<'a> {
     core: Core<'a>,
@@ -48,7 +48,7 @@ impl Iterator for Expander<'_> {
     /// The hot path — the next move of a running G92/G76/G78 cycle — is small enough to inline
     /// into the caller's loop, so the event is written straight to where the caller keeps it;
     /// everything else is `Core::next_slow`, which dispatches on `Run`.
-    /// With an operator script: one branch, then the operator layer ([`operator::Layer`]).
+    /// With an operator script: one branch, then the operator layer (`operator::Layer`).
     #[inline]
     fn next(&mut self) -> Option<Self::Item> {
         if self.operated {

@@ -67,7 +67,6 @@ pub mod config;
 pub mod contour;
 mod emit;
 mod expander;
-/// The cycle families and their G codes: the one place impl's cycle codes live.
 pub mod family;
 mod finish;
 pub mod fixed;

@@ -25,7 +25,7 @@ pub(crate) struct Core<'a> {
     pub(crate) ended: bool,
     /// The stream is over (end of program or after an alarm).
     pub(crate) done: bool,
-    /// An alarm that [`Expander::fill`] met after writing events, returned by the next call.
+    /// An alarm that [`crate::Expander::fill`] met after writing events, returned by the next call.
     pub(crate) pending: Option<Alarm>,
     /// The contour of the G70/G71/G72 cycle being carried out (CNT.MAX: at most
     /// [`crate::contour::MAX_BLOCKS`] elements, 48 000 bytes, initialised on first use). It lives here,
@@ -59,7 +59,7 @@ impl<'a> Core<'a> {
         Some(Err(alarm))
     }
 
-    /// [`Expander::fill`] without an operator script.
+    /// [`crate::Expander::fill`] without an operator script.
     pub(crate) fn fill(&mut self, out: &mut [Event]) -> Result<usize, Alarm> {
         let mut n = 0;
         while let Some(rest) = out.get_mut(n..).filter(|r| !r.is_empty()) {
@@ -127,7 +127,7 @@ impl Core<'_> {
         }
     }
 
-    /// [`Expander::fill`] with nothing running: the next block is read without taking an event
+    /// [`crate::Expander::fill`] with nothing running: the next block is read without taking an event
     /// from it (`Ok(None)`), so that what it runs writes its own events; before the first block,
     /// after the end or an alarm, as [`Core::next_slow`].
     #[inline(never)]

@@ -4,7 +4,7 @@
 //! the declared readings: [`readings`]; issue #29's group A points 1–4: [`thread_points`].
 extern crate std;
 
-use crate::Expander;
+use crate::expander::Expander;
 use cycle_vocab::text::Trace;
 use cycle_vocab::{Config, Dialect, Grid, Increment, Units};
 use std::string::String;
@@ -191,8 +191,8 @@ fn stream_rules() {
     assert_eq!(moves(&t), [Move::feed(5_000, -1_000, 20_000, Rule::PrjModal)]);
 }
 
-/// A fixed-seed xorshift generator for the random drivers (here, in `g162_tests` and in
-/// `schedule`'s tests).
+/// A fixed-seed xorshift generator for the random drivers (here and in the
+/// modules' tests).
 pub fn xorshift(state: &mut u64) -> u64 {
     *state ^= *state << 13;
     *state ^= *state >> 7;

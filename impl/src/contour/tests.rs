@@ -12,7 +12,7 @@ fn buffer_size() {
     assert!(core::mem::size_of::<crate::stream::Core<'_>>() < 50_500);
     // The operator layer (OP.SCRIPT): script, one cut, look-ahead, output queue.
     assert!(core::mem::size_of::<crate::operator::Layer>() <= 2_400);
-    assert!(core::mem::size_of::<crate::Expander<'_>>() < 52_800);
+    assert!(core::mem::size_of::<crate::expander::Expander<'_>>() < 52_800);
     let mut c = Contour::new();
     assert!(c.is_empty() && c.elements.is_none());
     for i in 0..MAX_BLOCKS {

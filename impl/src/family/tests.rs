@@ -30,7 +30,7 @@ fn lookup_finds_the_family_of_each_dialect() {
 /// a dialect outside the row it is refused by PRJ.DIALECT (G90 under nc201 aside).
 #[test]
 fn the_interpreter_reads_every_row() {
-    use crate::Expander;
+    use crate::expander::Expander;
     use cycle_vocab::{AlarmCode, Config, Rule};
     use std::format;
     for f in FAMILIES {

@@ -88,7 +88,7 @@ fn g74_columns_and_relief() {
 }
 
 /// G75.RELIEF under g75.relief = against-step: +Z against a −Z step; G75 returns 2e on the
-/// diameter. (The letter, −Z: `readings_tests`.)
+/// diameter. (The letter, −Z: `crate::tests::readings`.)
 #[test]
 fn g75_relief_against_the_step() {
     let mut c = Config::default();

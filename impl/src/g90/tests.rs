@@ -4,7 +4,7 @@
 extern crate std;
 
 use crate::tests::{expand, gcode, moves, passes};
-use crate::Expander;
+use crate::expander::Expander;
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Event, Grid, Increment, Move, Pass, PassKind, Rule, Units};
 use std::vec::Vec;
 

@@ -44,7 +44,7 @@ pub(super) enum Kind {
 }
 
 /// How a block whose G code `code` selects family `f` is read, by the family's name (the one
-/// map from [`family::FAMILIES`] to the interpreter); `None` for a family it does not know.
+/// map from [`crate::family::FAMILIES`] to the interpreter); `None` for a family it does not know.
 pub(super) fn cycle_kind(f: &FamilyCodes, code: u64, b: &Block, axis: bool) -> Option<Kind> {
     // G71.UW, G73.FORMAT: a block with P or Q is the second block.
     let pq = || b.has(b'P') || b.has(b'Q');

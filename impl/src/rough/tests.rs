@@ -7,7 +7,7 @@ extern crate std;
 use super::{cut_on, Axis};
 use crate::contour::Kind;
 use crate::tests::{assert_fill_agrees, expand, gcode, moves, passes};
-use crate::Expander;
+use crate::expander::Expander;
 use cycle_vocab::{Alarm, AlarmCode, Config, Event, Move, MoveKind, Params, Pass, PassKind, Rule};
 use std::format;
 use std::string::String;

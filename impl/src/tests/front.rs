@@ -32,7 +32,7 @@ fn byte_order_mark() {
     assert_eq!(expand("\u{feff}\u{feff}G0", c).alarm, al(AlarmCode::BadCharacter, 0xEF, Rule::PrjLex, 1));
     assert_eq!(expand(" \u{feff}G0", c).alarm, al(AlarmCode::BadCharacter, 0xEF, Rule::PrjLex, 1));
     // An incomplete mark is no mark; inside a comment any byte is ignored.
-    let t = crate::Expander::new(b"\xef\xbbG0 X1", c).next();
+    let t = crate::expander::Expander::new(b"\xef\xbbG0 X1", c).next();
     assert_eq!(t, Some(Err(Alarm::new(AlarmCode::BadCharacter, Some(0xEF), Rule::PrjLex, 1))));
     assert_eq!(expand("G0 X1 (\u{feff}) Z1\n", c).alarm, None);
 }

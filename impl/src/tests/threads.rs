@@ -210,7 +210,7 @@ fn multistart() {
 }
 
 /// G76.MODE / G78.MODE under thread.zref = groove: flank sequences; every mode ends the last
-/// rough pass and the finish at A.z + σ·t(T). (The letter, `start`: `readings_tests`.)
+/// rough pass and the finish at A.z + σ·t(T). (The letter, `start`: `super::readings`.)
 #[test]
 fn infeed_modes() {
     let mut groove = Config::default();

@@ -196,7 +196,7 @@ fn run_out_leg_and_retract() {
 
 /// G162.I, G162.J, G162.B under g162.lead = continuous: a shrinking pitch carries its floor
 /// |I|; F ≤ |I| is constant; a growing pitch past the F maximum is GEOMETRY on I; B is the start
-/// angle, B360 the zero mark. (The letter, `steps`: `readings_g162_tests`.)
+/// angle, B360 the zero mark. (The letter, `steps`: `super::readings`.)
 #[test]
 fn variable_pitch_and_start_angle() {
     let th = threads(&expand("G0 X50 Z5\nG162 X44 Z-30 H600 F3 I-0.5 J180 B90\n", continuous()));
@@ -268,7 +268,7 @@ fn g162_check_order() {
         ("G92 X1 Z1 F1", al(AlarmCode::UnsupportedCode, b'G', Rule::PrjDialect, 1)),
         ("G34 X1 Z1 F1 K1", al(AlarmCode::UnsupportedCode, b'G', Rule::PrjDialect, 1)),
         ("G76 X1 Z1 P1 Q1 F1", al(AlarmCode::UnsupportedCode, b'G', Rule::PrjDialect, 1)),
-        // G162.A: any tenth is legal (A27.3: `readings_g162_tests`); a second decimal is
+        // G162.A: any tenth is legal (A27.3: `super::readings`); a second decimal is
         // PRECISION under G162.A.
         ("G162 X1 Z-1 H1 F1 A27.35", al(AlarmCode::Precision, b'A', Rule::G162A, 1)),
         ("G162 X1 Z-1 H1 F1 A27.25", al(AlarmCode::Precision, b'A', Rule::G162A, 1)),

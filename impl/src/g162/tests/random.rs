@@ -176,7 +176,7 @@ fn no_panic_on_random_g162_and_thread_moves() {
             }
         }
         let mut n = 0;
-        for _ in crate::Expander::new(&buf, cfg) {
+        for _ in crate::expander::Expander::new(&buf, cfg) {
             n += 1;
             if n > 200_000 {
                 break;

@@ -240,7 +240,7 @@ fn random_holds_repeat_the_cut() {
         // The retract ends at A on a rapid.
         assert!(got[resume - 2].starts_with("G00 X40.000 Z5.000") || got[resume - 2].starts_with("G00 X65.000 Z5.000"));
         // `fill` in small pieces: the same stream.
-        let mut x = crate::Expander::new(prog.as_bytes(), config);
+        let mut x = crate::expander::Expander::new(prog.as_bytes(), config);
         let mut buf = [t.events[0]; 3];
         let mut filled: Vec<Event> = Vec::new();
         loop {

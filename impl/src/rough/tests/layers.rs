@@ -18,7 +18,7 @@ struct Case {
     shift: (i64, i64),
 }
 
-/// Frame helpers (a the layer axis, b the cut axis), as in `rough.rs`.
+/// Frame helpers (a the layer axis, b the cut axis), as in `rough::axis`.
 fn frame_point(axis: Axis, a: i64, b: i64) -> (i64, i64) {
     match axis {
         Axis::G71 => (a, b),
