@@ -2,9 +2,11 @@
 //! first block (docs/INTERPRETATION.md, "Parameters and defaults" and "The configuration is
 //! checked before the first block"): each bad value is `OUT OF RANGE` on line 0.
 
-use crate::modal::FANUC_ANGLES;
 use crate::words::MAX_LENGTH;
-use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Rule};
+use cycle_vocab::{Action, Alarm, AlarmCode, Config, Dialect, Rule, Script};
+
+/// FANUC tool angles (F76.FORMAT, PRJ.DIALECT: `003_…` line 5 lists 40 too).
+pub const FANUC_ANGLES: [u32; 7] = [80, 60, 55, 40, 30, 29, 0];
 
 /// The machine parameters in force: each value set in the configuration, else the default.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -150,4 +152,18 @@ pub fn check(c: &Config) -> Result<Params, Alarm> {
         p5139_peck_return,
         ..params
     })
+}
+
+/// OP.SCRIPT: checked with the configuration, after its other checks: 1 ≤ den ≤ 1 000 000
+/// and num ≤ den for every Hold and Reset, else `OUT OF RANGE` on line 0, no word. The
+/// script's length is bounded by its type (`SCRIPT_MAX`).
+pub fn check_script(script: &Script) -> Result<(), Alarm> {
+    for a in script.actions() {
+        if let Action::Hold(p) | Action::Reset(p) = a {
+            if !p.is_legal() {
+                return Err(Alarm::new(AlarmCode::OutOfRange, None, Rule::OpScript, 0));
+            }
+        }
+    }
+    Ok(())
 }

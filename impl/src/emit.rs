@@ -4,16 +4,9 @@
 //! counter.
 
 use crate::fixed::start_angle;
-use crate::multipass::Multi;
+use crate::passes::{Cut, Multi};
 use crate::pullout::{z_long, Offsets};
 use cycle_vocab::{Event, Move, Pass, Rule};
-
-/// The geometry of one pass: where the cut starts (C or Bn) and ends (D or En), X on diameter.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Cut {
-    pub p0: (i64, i64),
-    pub end: (i64, i64),
-}
 
 /// What stays fixed for a whole cycle.
 #[derive(Clone, Copy, Debug)]

@@ -74,3 +74,6 @@ impl Cycle {
         emit(Move::rapid(self.start.0, self.start.1, Rule::G70Return), pos)
     }
 }
+
+#[cfg(test)]
+mod tests;

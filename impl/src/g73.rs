@@ -131,3 +131,6 @@ impl Cycle {
         }
     }
 }
+
+#[cfg(test)]
+mod tests;

@@ -252,3 +252,6 @@ impl Cycle {
         }
     }
 }
+
+#[cfg(test)]
+mod tests;

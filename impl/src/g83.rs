@@ -155,3 +155,6 @@ impl Cycle {
         }
     }
 }
+
+#[cfg(test)]
+mod tests;

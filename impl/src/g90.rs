@@ -170,3 +170,6 @@ impl Cycle {
         None
     }
 }
+
+#[cfg(test)]
+mod tests;

@@ -1,7 +1,8 @@
 //! G92 single thread cycle (M002): the modal run and the cycle's checks and path.
 
 use crate::fixed::sat;
-use crate::emit::{Cut, Cycle, Path, Plan};
+use crate::emit::{Cycle, Path, Plan};
+use crate::passes::Cut;
 use crate::pullout::{g92_amounts, offsets, tenths_of_lead, travel, Amounts, Offsets};
 use crate::config::Params;
 use cycle_vocab::{Alarm, AlarmCode, Config, Pass, PassKind, Rule};

@@ -367,5 +367,4 @@ impl Iterator for Blocks<'_> {
 }
 
 #[cfg(test)]
-#[path = "lex_tests.rs"]
 mod tests;

@@ -1,13 +1,13 @@
 //! G76 / G78 / FANUC G76 multi-pass cycles (M001, M000, M003): first-block values, the
 //! second block's checks (step 5 of the check order) and the pass plan.
 
-use crate::emit::{Cut, Cycle, Path, Plan};
+use crate::emit::{Cycle, Path, Plan};
+use crate::passes::{Flank, FlankZ, Multi};
 use crate::fixed::{sat, Tan};
 use crate::pullout::{multi_amounts, offsets, tenths_of_lead, travel};
-use crate::schedule::{Rough, Schedule, ScheduleParams};
+use crate::schedule::{Schedule, ScheduleParams};
 use crate::config::Params;
-use cycle_vocab::readings::ThreadZRef;
-use cycle_vocab::{Alarm, AlarmCode, Config, Pass, PassKind, Rule};
+use cycle_vocab::{Alarm, AlarmCode, Config, Rule};
 
 /// Which multi-pass code.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -78,36 +78,6 @@ pub struct Second {
     pub lead: i64,
 }
 
-/// Infeed flank of a rough pass (G76.MODE, G78.MODE).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Flank {
-    Right,
-    Centre,
-    Left,
-}
-
-/// A flank's Z offset (before σ) as a function of the depth: base + mul·t(δ).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct FlankZ {
-    base: i64,
-    mul: i64,
-}
-
-impl FlankZ {
-    /// Infeed Z and the modes (declared reading thread.zref), with t(T) = `t_target`:
-    /// `start` (the letter) measures every mode from B.z = A.z — right t(δ), centre 0, left
-    /// −t(δ); `groove` ends every mode's last rough pass at t(T) — right t(δ), centre t(T),
-    /// left 2·t(T) − t(δ).
-    fn of(flank: Flank, zref: ThreadZRef, t_target: i64) -> FlankZ {
-        let groove = zref == ThreadZRef::Groove;
-        match flank {
-            Flank::Right => FlankZ { base: 0, mul: 1 },
-            Flank::Centre => FlankZ { base: if groove { t_target } else { 0 }, mul: 0 },
-            Flank::Left => FlankZ { base: if groove { t_target.saturating_mul(2) } else { 0 }, mul: -1 },
-        }
-    }
-}
-
 /// G76.MODE / G78.MODE: the flanks of the rough passes, (even n, odd n).
 fn flanks(code: Code, mode: u32) -> (Flank, Flank) {
     match (code, mode) {
@@ -116,113 +86,6 @@ fn flanks(code: Code, mode: u32) -> (Flank, Flank) {
         (Code::G78, 0) => (Flank::Centre, Flank::Centre),
         (Code::G78, 1) => (Flank::Left, Flank::Left),
         _ => (Flank::Right, Flank::Right), // G76 e = 0, G78 mode 2
-    }
-}
-
-/// The pass plan of a multi-pass cycle and its fixed geometry.
-#[derive(Clone, Copy, Debug)]
-pub struct Multi {
-    /// The Z offsets of even and odd rough passes (G76.MODE, G78.MODE, thread.zref).
-    flanks: (FlankZ, FlankZ),
-    sched: Schedule,
-    /// The current rough pass, `None` once finishing.
-    rough: Option<Rough>,
-    /// Finishing passes done (including the current one).
-    finish: u32,
-    m: u32,
-    index: u32,
-    /// B.x = C.x + 2·s·k, diameter: where a cut at depth 0 would start.
-    bx: i64,
-    /// A.z.
-    az: i64,
-    /// σ = −s (s the side, ±1): the sign of the infeed's Z offset, and of X on radius per
-    /// increment of depth.
-    sigma: i64,
-    k: i64,
-    /// −2·R(i): the cut's X travel on diameter.
-    taper: i64,
-    /// W.
-    w: i64,
-    /// tan(a/2), a the tool angle (looked up once; a is a legal word, ≤ 178 half degrees).
-    tan: Tan,
-    /// G76.FINISH.Z: the Z offset of the last rough pass, where the finishing passes cut.
-    finish_off: i64,
-}
-
-impl Multi {
-    /// G76.INFEED.Z: t(δ) = round(δ·tan(a/2)).
-    fn t(&self, depth: i64) -> i64 {
-        i64::try_from(self.tan.times(depth.max(0).unsigned_abs())).unwrap_or(i64::MAX)
-    }
-
-    /// G76.INFEED.X, G76.INFEED.Z, G76.PATH: the cut of a pass at radius depth δ with Z offset
-    /// `off`: from (B.x + 2σ·δ, A.z + σ·off), travelling (−2i, W). Legal words keep every term
-    /// below 2^40 (lengths ≤ 10^9, tan(a/2) ≤ 57): the 64-bit arithmetic is exact and never
-    /// wraps; wrapping operations keep an impossible overflow from panicking.
-    fn cut(&self, depth: i64, off: i64) -> Cut {
-        let x = self.bx.wrapping_add(self.sigma.wrapping_mul(depth).wrapping_mul(2));
-        let z = self.az.wrapping_add(self.sigma.wrapping_mul(off));
-        Cut { p0: (x, z), end: (x.wrapping_add(self.taper), z.wrapping_add(self.w)) }
-    }
-
-    /// The Z offset (before σ) of flank `f` at depth δ.
-    #[inline(always)]
-    fn offset(&self, f: FlankZ, depth: i64) -> i64 {
-        if f.mul == 0 {
-            return f.base;
-        }
-        f.base.saturating_add(f.mul.saturating_mul(self.t(depth)))
-    }
-
-    /// The cut of rough pass `r` (G76.DEPTH.*, G76.MODE, G78.MODE). Inlined into the pass
-    /// change, which keeps its state in registers (outlined, it cost ~20 instructions a pass).
-    #[inline(always)]
-    fn rough_cut(&self, r: &Rough) -> Cut {
-        let f = if r.n % 2 == 1 { self.flanks.1 } else { self.flanks.0 };
-        self.cut(r.depth, self.offset(f, r.depth))
-    }
-
-    /// The header of the current pass: a rough pass (G76.DEPTH.*), or a finishing pass at
-    /// depth k (G76.FINISH: the first finishing pass, then spring passes).
-    #[inline]
-    pub fn header(&self) -> Pass {
-        match &self.rough {
-            Some(r) => {
-                Pass { index: self.index, kind: PassKind::Rough, diameter_depth: r.depth.saturating_mul(2), rule: r.rule }
-            }
-            None => {
-                let kind = if self.finish <= 1 { PassKind::Finish } else { PassKind::Spring };
-                Pass { index: self.index, kind, diameter_depth: self.k.saturating_mul(2), rule: Rule::G76Finish }
-            }
-        }
-    }
-
-    /// The cut of the first pass.
-    fn begin(&mut self) -> Cut {
-        let r = self.sched.first();
-        self.rough = Some(r);
-        self.index = 1;
-        self.rough_cut(&r)
-    }
-
-    /// Moves on to the pass after the current one and returns its cut, or `None` when the
-    /// cycle is done.
-    #[inline]
-    pub fn advance(&mut self) -> Option<Cut> {
-        self.index = self.index.checked_add(1)?;
-        if let Some(prev) = self.rough {
-            if let Some(r) = self.sched.next(&prev) {
-                self.rough = Some(r);
-                return Some(self.rough_cut(&r));
-            }
-            self.rough = None;
-        }
-        if self.finish >= self.m {
-            return None;
-        }
-        self.finish += 1;
-        // G76.FINISH.Z: at the Z of the last rough pass.
-        Some(self.cut(self.k, self.finish_off))
     }
 }
 

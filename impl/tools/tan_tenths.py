@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
-"""Generates impl/src/tan_table.rs: tan(t * 0.1 deg) for t = 0..890 (0.0 deg .. 89.0 deg) as
+"""Generates impl/src/fixed/tan_table.rs: tan(t * 0.1 deg) for t = 0..890 (0.0 deg .. 89.0 deg) as
 (integer part, floor(fraction * 2^128)), and checks the decision margin the production
 expander relies on (fixed.rs, `Tan::mul_checked`).
 
 How it was run (from the repository root; the venv is not committed):
 
     python3 -m venv /tmp/venv && /tmp/venv/bin/pip install mpmath     # mpmath 1.4.1
-    /tmp/venv/bin/python impl/tools/tan_tenths.py > impl/src/tan_table.rs
+    /tmp/venv/bin/python impl/tools/tan_tenths.py > impl/src/fixed/tan_table.rs
 
 The margin report goes to stderr. Exactness argument: tan of a rational number of degrees is
 rational only at 0 deg and 45 deg (Niven); for every other entry tan is irrational and the table
@@ -80,8 +80,10 @@ def main():
         out.write("    " + ", ".join(str(i) for i, _ in rows[k:k + 30]) + ",\n")
     out.write("];\n\n")
     out.write(f"/// ⌊fraction · 2^128⌋ of tan(t · 0.1°), t = 0…890 (exact at 0° and 45°).\n#[rustfmt::skip]\npub(crate) const TAN_FRAC: [u128; {ENTRIES}] = [\n")
-    for t, (_, f) in enumerate(rows):
-        out.write(f"    0x{f:032x}, // {t // 10}.{t % 10}°\n")
+    for k in range(0, ENTRIES, 3):
+        group = rows[k:k + 3]
+        last = k + len(group) - 1
+        out.write("    " + " ".join(f"0x{f:032x}," for _, f in group) + f" // {k // 10}.{k % 10}°–{last // 10}.{last % 10}°\n")
     out.write("];\n")
 
 

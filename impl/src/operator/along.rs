@@ -1,10 +1,10 @@
-//! Points along a move and the script's own check (OP.SCRIPT).
+//! Points along a move (OP.SCRIPT).
 
 use crate::fixed::sat;
-use cycle_vocab::{Action, Alarm, AlarmCode, Along, Rule, Script};
+use cycle_vocab::Along;
 
 /// A fraction `num / den` of a move, 0 ≤ num ≤ den, 1 ≤ den ≤ 1 000 000 (checked with the
-/// configuration, [`check_script`]).
+/// configuration, `config::check_script`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Frac {
     pub num: u32,
@@ -42,18 +42,4 @@ pub fn point(s: (i64, i64), e: (i64, i64), f: Frac) -> (i64, i64) {
         sat(i128::from(s) + off)
     };
     (axis(s.0, e.0), axis(s.1, e.1))
-}
-
-/// OP.SCRIPT: checked with the configuration, after its other checks: 1 ≤ den ≤ 1 000 000
-/// and num ≤ den for every Hold and Reset, else `OUT OF RANGE` on line 0, no word. The
-/// script's length is bounded by its type (`SCRIPT_MAX`).
-pub fn check_script(script: &Script) -> Result<(), Alarm> {
-    for a in script.actions() {
-        if let Action::Hold(p) | Action::Reset(p) = a {
-            if !p.is_legal() {
-                return Err(Alarm::new(AlarmCode::OutOfRange, None, Rule::OpScript, 0));
-            }
-        }
-    }
-    Ok(())
 }

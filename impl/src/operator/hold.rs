@@ -7,7 +7,7 @@ use super::along::Frac;
 use super::geometry::retract_targets;
 use super::source::{CutInfo, Kind, Look, Role};
 use super::{After, Layer, Phase};
-use crate::Core;
+use crate::stream::Core;
 use cycle_vocab::{Button, Event, Move, Press, Resume, Rule, Stop, StopReason};
 
 /// Whether a cut event is a thread move of the cut (the lead-in, the cut, the pull-out).

@@ -20,9 +20,7 @@ pub mod geometry;
 mod hold;
 pub(crate) mod source;
 
-pub use along::check_script;
-
-use crate::Core;
+use crate::stream::Core;
 use along::Frac;
 use cycle_vocab::{Action, Alarm, AlarmCode, Config, Event, Move, Resume, Rule, Script};
 use source::{Item, Look, Source};
@@ -294,3 +292,6 @@ impl Layer {
         }
     }
 }
+
+#[cfg(test)]
+mod tests;

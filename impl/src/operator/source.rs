@@ -6,7 +6,7 @@
 
 use crate::emit::START_EVENTS;
 use crate::run::Run;
-use crate::Core;
+use crate::stream::Core;
 use cycle_vocab::{Alarm, Event, MoveKind, Resume, Rule};
 
 /// The most events of one cut (G92.HOLD: a pass header, the rapid to Bn or to the lead-in

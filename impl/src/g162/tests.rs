@@ -1,0 +1,91 @@
+use super::*;
+extern crate std;
+use std::vec::Vec;
+
+fn depths(p: i64, q: i64) -> Vec<i64> {
+    let sp = SplitParams { depth: p, allowance: q };
+    let mut r = first(&sp);
+    let mut out = std::vec![r.depth];
+    while let Some(n) = next(&sp, &r) {
+        assert_eq!(n.n, r.n + 1);
+        out.push(n.depth);
+        r = n;
+    }
+    assert!(r.last);
+    assert_eq!(pass_count(&sp, u32::MAX), Some(u32::try_from(out.len()).unwrap()));
+    out
+}
+
+/// G162.SPLIT: P2.5 Q1 — the manual's 1, 2, 2.25, 2.375, 2.4375, 2.5 on the ISC grid
+/// (0.0001 mm) and 2.438 in place of 2.4375 on ISB (2.4375 rounds half up).
+#[test]
+fn manual_split() {
+    assert_eq!(depths(25_000, 10_000), [10_000, 20_000, 22_500, 23_750, 24_375, 25_000]);
+    assert_eq!(depths(2_500, 1_000), [1_000, 2_000, 2_250, 2_375, 2_438, 2_500]);
+}
+
+/// The register's examples: D = 0 (no split), a remainder below one increment per cut,
+/// Q > P, and the worked example P1.2 Q0.5.
+#[test]
+fn register_examples() {
+    assert_eq!(depths(3_000, 1_000), [1_000, 2_000, 3_000]);
+    assert_eq!(depths(3, 2), [2, 3]);
+    assert_eq!(depths(500, 1_000), [250, 375, 438, 500]);
+    assert_eq!(depths(1_200, 500), [500, 1_000, 1_100, 1_150, 1_175, 1_200]);
+    assert_eq!(depths(1, 1), [1]);
+    assert_eq!(depths(1, 5), [1]);
+    assert_eq!(depths(2, 5), [1, 2]);
+    let sp = SplitParams { depth: 999_999_999, allowance: 1 };
+    assert_eq!(pass_count(&sp, 10_000), None);
+    assert_eq!(pass_count(&sp, u32::MAX), Some(999_999_999));
+}
+
+/// G162.F: the manual's cone — 2 mm along a cone 50 mm long with a 20 mm diameter
+/// difference is F = 2·50/√(50² + 10²) = 1.96116… mm → 1.9612 (lead counts of 0.0001 mm),
+/// the manual's 1.96. A cylinder keeps the pitch; a steep cone measures along X.
+#[test]
+fn manual_pitch_example() {
+    assert_eq!(pitch_along_long_axis(20_000, 50, 10), Some(19_612));
+    assert_eq!(pitch_along_long_axis(20_000, 50_000, 10_000), Some(19_612));
+    assert_eq!(pitch_along_long_axis(20_000, 50, 0), Some(20_000));
+    // 3-4-5: exactly 0.8·F; half-way cases round up: 5·4/5 = 4, 1·1/√2 = 0.707 → 1.
+    assert_eq!(pitch_along_long_axis(5, 4, 3), Some(4));
+    assert_eq!(pitch_along_long_axis(1, 1, 1), Some(1));
+    assert_eq!(pitch_along_long_axis(1, 0, 0), None);
+    // Brute force against the exact bracket for small values.
+    for f in 1..40u64 {
+        for l in 1..25u64 {
+            for r in 0..25u64 {
+                let m = u128::from(pitch_along_long_axis(f, l, r).unwrap());
+                let (x2, s) = (4 * u128::from(f * f * l * l), u128::from(l * l + r * r));
+                assert!(m == 0 || (2 * m - 1) * (2 * m - 1) * s <= x2, "{f} {l} {r}");
+                assert!(x2 < (2 * m + 1) * (2 * m + 1) * s, "{f} {l} {r}");
+            }
+        }
+    }
+    // The largest values fit: F = 9999 mm, L and r = N.
+    assert!(pitch_along_long_axis(99_990_000, 999_999_999, 999_999_999).is_some());
+}
+
+/// Every P, Q ≤ 60: strictly increasing depths ending exactly at P, full cuts of Q first,
+/// split cuts summing to the remainder, each split target within half an increment of its
+/// exact value, and the pass count agreeing with the iteration.
+#[test]
+fn split_properties_small() {
+    for p in 1..=60i64 {
+        for q in 1..=60i64 {
+            let d = depths(p, q);
+            assert!(d.windows(2).all(|w| w[0] < w[1]), "{p} {q} {d:?}");
+            assert_eq!(d.last(), Some(&p));
+            let k = p / q;
+            for (i, &x) in d.iter().enumerate().take(usize::try_from(k).unwrap()) {
+                assert_eq!(x, (i as i64 + 1) * q);
+            }
+            assert!(d.len() <= usize::try_from(k).unwrap() + 4);
+        }
+    }
+}
+
+mod programs;
+mod random;
+mod readings;

@@ -1,0 +1,42 @@
+use super::*;
+
+const G: Grid = Grid::METRIC_ISB;
+
+fn w(lead: i64, p: u32, k: i64) -> ThreadWords {
+    ThreadWords { lead, p, k }
+}
+
+#[test]
+fn moves() {
+    let m = thread_move(ThreadCode::G32, (30_000, 5_000), (29_000, -35_000), &w(20_000, 0, 0), G, 1).unwrap();
+    assert_eq!(m, Move::thread(29_000, -35_000, 20_000, 0, Rule::G32));
+    // G33 P180000: the second start of a two-start thread.
+    let m = thread_move(ThreadCode::G33, (34_000, 5_000), (34_000, -26_000), &w(60_000, 180_000, 0), G, 1).unwrap();
+    assert_eq!(m.angle, 180_000);
+    assert_eq!(m.rule, Rule::G33);
+    // P is ignored outside G33; K = 0 is a constant lead.
+    let m = thread_move(ThreadCode::G34, (0, 0), (0, -1_000), &w(20_000, 0, 0), G, 1).unwrap();
+    assert_eq!(m, Move::thread(0, -1_000, 20_000, 0, Rule::G34));
+}
+
+/// G34: a 2 mm lead shrinking by 0.1 mm per revolution over Z travel s: L² = F² + K·2s.
+/// F = 20 000, K = −1 000 counts: F² = 4·10^8, so 2s·1 000 < 4·10^8 needs s < 200 000
+/// counts = 20 mm (ISB: 10 counts per increment), i.e. |ΔZ| < 20 000 increments.
+#[test]
+fn g34_bound() {
+    let ok = thread_move(ThreadCode::G34, (0, 0), (0, -19_999), &w(20_000, 0, -1_000), G, 4).unwrap();
+    assert_eq!(ok, Move::variable_thread(0, -19_999, 20_000, 0, -1_000, 360_000, 0, Rule::G34));
+    let bad = thread_move(ThreadCode::G34, (0, 0), (0, -20_000), &w(20_000, 0, -1_000), G, 4);
+    assert_eq!(bad, Err(Alarm::new(AlarmCode::Geometry, Some(b'K'), Rule::G34, 4)));
+    // X long (a face thread): s2 = |ΔX| (diameter) counts.
+    assert!(thread_move(ThreadCode::G34, (0, 0), (39_998, 0), &w(20_000, 0, -1_000), G, 4).is_ok());
+    assert!(thread_move(ThreadCode::G34, (0, 0), (40_000, 0), &w(20_000, 0, -1_000), G, 4).is_err());
+    // Growing past the F maximum 9999 mm.
+    let fmax = max_lead(G.units);
+    assert!(thread_move(ThreadCode::G34, (0, 0), (0, -1), &w(fmax, 0, 1), G, 4).is_err());
+    assert!(thread_move(ThreadCode::G34, (0, 0), (0, -1), &w(fmax - 1, 0, 1), G, 4).is_ok());
+    // The exact edge: F = Fmax − 200 counts, s2 = 2·1 000·10 = 20 000 counts and
+    // K·s2 = Fmax² − F² = 39 995 960 000: the end lead is exactly Fmax — allowed; K + 1 is not.
+    assert!(thread_move(ThreadCode::G34, (0, 0), (0, -1_000), &w(fmax - 200, 0, 1_999_798), G, 4).is_ok());
+    assert!(thread_move(ThreadCode::G34, (0, 0), (0, -1_000), &w(fmax - 200, 0, 1_999_799), G, 4).is_err());
+}
