@@ -59,6 +59,7 @@ pub mod arc;
 pub mod config;
 pub mod contour;
 mod emit;
+pub mod family;
 mod finish;
 pub mod fixed;
 mod g73;
