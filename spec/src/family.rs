@@ -4,7 +4,7 @@
 //! conflicts, the check order, G00/G01, the position and the feed. Everything a family adds is
 //! behind [`Family`]: which G codes select it under which dialects, which words each of its
 //! blocks accepts and how each value is read, and the handler that executes a block. Adding a
-//! family is its module and one entry in [`table`].
+//! family is its module and one row in the family table ([`FAMILIES`]).
 
 use crate::config::{params, Params};
 use crate::emit::Out;
@@ -13,16 +13,8 @@ use crate::words::Read;
 use cycle_vocab::{Alarm, Config, Dialect, Rule};
 use std::rc::Rc;
 
-/// A G code of a family and the dialects that have it; under any other dialect it is
-/// `UNSUPPORTED CODE`, rule PRJ.DIALECT.
-#[derive(Clone, Copy, Debug)]
-pub struct Code {
-    pub g: u32,
-    pub dialects: &'static [Dialect],
-}
-
-/// `gsk` and `fanuc`: the codes of M001, M002, M003.
-pub const GSK_FANUC: &[Dialect] = &[Dialect::Gsk, Dialect::Fanuc];
+mod table;
+pub use table::{rows, select, Row, Selection, FAMILIES, NO_CYCLE};
 
 /// The words a block accepts (besides G N O M S T) and how each is read; any other word is
 /// `WORD NOT ALLOWED`, rule PRJ.WORD, except the letters of `refused` (a stricter format than
@@ -85,15 +77,19 @@ pub struct BlockIn<'v> {
     pub line: u32,
 }
 
-/// One cycle family.
+/// One cycle family's handler; its G codes and dialects are its rows of [`FAMILIES`].
 pub trait Family {
-    /// The family's G codes (PRJ.SUPPORTED, PRJ.DIALECT).
-    fn codes(&self) -> &'static [Code];
     /// Whether its codes are motion modes (PRJ.MODAL): a later block with no motion code runs
-    /// the same code again. Otherwise they are one-shot and leave the motion mode unchanged.
-    fn modal(&self) -> bool;
-    /// Whether I is threads per inch in its blocks, so that F with I is a `CONFLICT` (COM.LEAD).
-    fn thread(&self) -> bool;
+    /// the same code again. Otherwise (the default) they are one-shot and leave the motion mode
+    /// unchanged (CYC.ONESHOT).
+    fn modal(&self) -> bool {
+        false
+    }
+    /// Whether I is threads per inch in its blocks, so that F with I is a `CONFLICT` (COM.LEAD);
+    /// by default it is not.
+    fn thread(&self) -> bool {
+        false
+    }
     /// The words a block of this kind accepts under `dialect` (PRJ.WORD, check steps 2 and 3).
     fn words(&self, kind: Kind, dialect: Dialect) -> Words;
     /// Executes a block whose words are allowed and read (check steps 4 and 5, then the moves).
@@ -170,27 +166,6 @@ impl<'p> Source<'p> {
             }
         }
     }
-}
-
-/// The spec's families, in no particular order (each G code belongs to one).
-pub fn table() -> Vec<Box<dyn Family>> {
-    vec![
-        Box::new(crate::g92::G92::default()),
-        Box::new(crate::multipass::unit::Multipass::default()),
-        Box::new(crate::thread_moves::ThreadMoves),
-        Box::new(crate::g162::unit::G162),
-        Box::new(crate::g90::G90::default()),
-        Box::new(crate::g94::G94::default()),
-        Box::new(crate::g50::G50),
-        Box::new(crate::g70::G70),
-        Box::new(crate::g71::G71::default()),
-        Box::new(crate::g72::G72::default()),
-        Box::new(crate::g73::G73::default()),
-        Box::new(crate::g74::G74::default()),
-        Box::new(crate::g75::G75::default()),
-        Box::new(crate::g83::G83),
-        Box::new(crate::g84::G84),
-    ]
 }
 
 /// The values of one block's words, by letter (lengths in increments, leads in lead counts).
@@ -296,21 +271,4 @@ impl State<'_> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Each G code belongs to one family, and no family takes G00/G01, G90/G91 under `nc201`,
-    /// or a no-motion code.
-    #[test]
-    fn each_code_has_one_family() {
-        let mut seen = Vec::new();
-        for f in table() {
-            for c in f.codes() {
-                assert!(!seen.contains(&c.g), "G{} twice", c.g);
-                assert!(![0, 1, 18, 20, 21, 40, 91, 97, 99].contains(&c.g), "G{}", c.g);
-                assert!(!(c.g == 90 && c.dialects.contains(&Dialect::Nc201)));
-                seen.push(c.g);
-            }
-        }
-    }
-}
+mod tests;

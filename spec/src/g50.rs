@@ -5,12 +5,12 @@
 //! event. G50 is one-shot: the motion mode does not change and a G92/G90/G94 run goes on. `G50
 //! S` (spindle limit) changes no geometry (G50.SMAX).
 
-use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
+use crate::family::{BlockIn, Family, Kind, Source, State, Words};
 use crate::words::{X, Z};
 use cycle_vocab::{Alarm, Dialect};
 
 /// G50 as a family of the interpreter: a one-shot code without moves.
-#[derive(Debug)]
+#[derive(Debug, Default)]
 pub struct G50;
 
 /// G50.COORD (M003): X and Z, absolute only, |v| ≤ N (COM.RANGES); "U, W and every other word
@@ -18,15 +18,6 @@ pub struct G50;
 const WORDS: Words = Words::of(&[X, Z]);
 
 impl Family for G50 {
-    fn codes(&self) -> &'static [Code] {
-        &[Code { g: 50, dialects: GSK_FANUC }]
-    }
-    fn modal(&self) -> bool {
-        false
-    }
-    fn thread(&self) -> bool {
-        false
-    }
     fn words(&self, _: Kind, _: Dialect) -> Words {
         WORDS
     }

@@ -10,12 +10,12 @@ use crate::contour::block::{read, Reader};
 use crate::contour::path::{run, Feed};
 use crate::contour::{self, Contour, Point};
 use crate::emit::Out;
-use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
+use crate::family::{BlockIn, Family, Kind, Source, State, Words};
 use crate::words::{alarm, Read, F, U, W};
 use cycle_vocab::{Alarm, AlarmCode, Dialect, PassKind, Rule};
 
 /// G70 as a family of the interpreter: a one-shot code.
-#[derive(Debug)]
+#[derive(Debug, Default)]
 pub struct G70;
 
 /// CNT.PQ (M003): "P(ns) and Q(nf) … are integers (`NOT INTEGER`, COM.RANGES) in 1 … 99 999
@@ -28,15 +28,6 @@ pub const Q: (u8, Read) = (b'Q', Read::Integer { lo: 1, hi: 99_999, rule: Rule::
 const WORDS: Words = Words::of(&[F, P, Q, U, W]);
 
 impl Family for G70 {
-    fn codes(&self) -> &'static [Code] {
-        &[Code { g: 70, dialects: GSK_FANUC }]
-    }
-    fn modal(&self) -> bool {
-        false
-    }
-    fn thread(&self) -> bool {
-        false
-    }
     fn words(&self, _: Kind, _: Dialect) -> Words {
         WORDS
     }

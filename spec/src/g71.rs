@@ -7,7 +7,7 @@
 //! ([`crate::stock_removal`]). One-shot (CYC.ONESHOT): the motion mode stays. The seed's
 //! example 1 (G71.EXAMPLE, `corpus/g71_example.nc`) is expanded here.
 
-use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
+use crate::family::{BlockIn, Family, Kind, Source, State, Words};
 use crate::g70::{P, Q};
 use crate::stock_removal::{second_block, Axes, First};
 use crate::words::{Read, F, N, U, W};
@@ -32,15 +32,6 @@ const FIRST: Words = Words::of(&[
 pub const SECOND: Words = Words::of(&[F, P, Q, U, W]);
 
 impl Family for G71 {
-    fn codes(&self) -> &'static [Code] {
-        &[Code { g: 71, dialects: GSK_FANUC }]
-    }
-    fn modal(&self) -> bool {
-        false
-    }
-    fn thread(&self) -> bool {
-        false
-    }
     /// G71.UW (M003): "A G71 block with P or Q is the second block, else the first".
     fn words(&self, kind: Kind, _: Dialect) -> Words {
         if kind.pq {

@@ -5,7 +5,7 @@
 //! values are kept apart from G71's, with the same parameters 5132, 5133 (G72.DEPTH). The seed's
 //! example 2 (G72.EXAMPLE, `corpus/g72_example.nc`) is expanded here.
 
-use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
+use crate::family::{BlockIn, Family, Kind, Source, State, Words};
 use crate::g71::SECOND;
 use crate::stock_removal::{second_block, Axes, First};
 use crate::words::{Read, N};
@@ -25,15 +25,6 @@ const FIRST: Words = Words::of(&[
 ]);
 
 impl Family for G72 {
-    fn codes(&self) -> &'static [Code] {
-        &[Code { g: 72, dialects: GSK_FANUC }]
-    }
-    fn modal(&self) -> bool {
-        false
-    }
-    fn thread(&self) -> bool {
-        false
-    }
     /// G72.FORMAT (M003), as G71.UW: a block with P or Q is the second block ("P Q U W F S T as
     /// G71's"), else the first.
     fn words(&self, kind: Kind, _: Dialect) -> Words {

@@ -12,7 +12,7 @@ use crate::contour::path::{run, Feed};
 use crate::contour::{self, Contour, Point};
 use crate::emit::Out;
 use crate::exact::round_div;
-use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
+use crate::family::{BlockIn, Family, Kind, Source, State, Words};
 use crate::g70::{P, Q};
 use crate::words::{alarm, Read, F, N, U, W};
 use cycle_vocab::readings::G73C;
@@ -72,15 +72,6 @@ fn format(kind: Kind) -> Format {
 }
 
 impl Family for G73 {
-    fn codes(&self) -> &'static [Code] {
-        &[Code { g: 73, dialects: GSK_FANUC }]
-    }
-    fn modal(&self) -> bool {
-        false
-    }
-    fn thread(&self) -> bool {
-        false
-    }
     fn words(&self, kind: Kind, _: Dialect) -> Words {
         match format(kind) {
             Format::First => FIRST,

@@ -5,7 +5,7 @@
 //! (CYC.ONESHOT): the motion mode stays; the modal feed afterwards is the F of the cycle block.
 //! The seed's example 4 (G74.EXAMPLE, `corpus/g74_example.nc`) is expanded here.
 
-use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
+use crate::family::{BlockIn, Family, Kind, Source, State, Words};
 use crate::grooving::{second_block, words, Axes};
 use cycle_vocab::{Alarm, Dialect};
 
@@ -23,15 +23,6 @@ pub fn second(kind: Kind) -> bool {
 }
 
 impl Family for G74 {
-    fn codes(&self) -> &'static [Code] {
-        &[Code { g: 74, dialects: GSK_FANUC }]
-    }
-    fn modal(&self) -> bool {
-        false
-    }
-    fn thread(&self) -> bool {
-        false
-    }
     fn words(&self, kind: Kind, _: Dialect) -> Words {
         words(second(kind))
     }

@@ -5,7 +5,7 @@
 //! [`crate::grooving`]. One-shot (CYC.ONESHOT). The seed's example 5 (G75.EXAMPLE,
 //! `corpus/g75_example.nc`) is expanded here.
 
-use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
+use crate::family::{BlockIn, Family, Kind, Source, State, Words};
 use crate::g74::second;
 use crate::grooving::{second_block, words, Axes};
 use cycle_vocab::{Alarm, Dialect};
@@ -19,15 +19,6 @@ pub struct G75 {
 }
 
 impl Family for G75 {
-    fn codes(&self) -> &'static [Code] {
-        &[Code { g: 75, dialects: GSK_FANUC }]
-    }
-    fn modal(&self) -> bool {
-        false
-    }
-    fn thread(&self) -> bool {
-        false
-    }
     fn words(&self, kind: Kind, _: Dialect) -> Words {
         words(second(kind))
     }

@@ -8,13 +8,13 @@
 //! seed's line `G83Z-30R0.5Q2000F0.2` is `corpus/g83_example.nc`.
 
 use crate::emit::Out;
-use crate::family::{BlockIn, Code, Family, Kind, Source, State, Values, Words, GSK_FANUC};
+use crate::family::{BlockIn, Family, Kind, Source, State, Values, Words};
 use crate::grooving::stops;
 use crate::words::{alarm, Read, F, N, W, Z};
 use cycle_vocab::{Alarm, AlarmCode, Dialect, PassKind, Rule};
 
 /// G83 as a family of the interpreter: a one-shot code without memory.
-#[derive(Debug)]
+#[derive(Debug, Default)]
 pub struct G83;
 
 /// "R (OPEN). … Length, |R| ≤ N."
@@ -34,15 +34,6 @@ const Q: (u8, Read) = (b'Q', Read::Integer { lo: 0, hi: N, rule: Rule::ComRanges
 const WORDS: Words = Words::of(&[F, P, Q, R, W, Z]);
 
 impl Family for G83 {
-    fn codes(&self) -> &'static [Code] {
-        &[Code { g: 83, dialects: GSK_FANUC }]
-    }
-    fn modal(&self) -> bool {
-        false
-    }
-    fn thread(&self) -> bool {
-        false
-    }
     fn words(&self, _: Kind, _: Dialect) -> Words {
         WORDS
     }

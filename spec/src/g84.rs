@@ -8,29 +8,20 @@
 //! `G98M29S60G84Z-21R2F60G80` is `corpus/g84_example.nc`.
 
 use crate::exact::round_div;
-use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
+use crate::family::{BlockIn, Family, Kind, Source, State, Words};
 use crate::g83::{Levels, P, R};
 use crate::words::{alarm, F, W, Z};
 use cycle_vocab::{Alarm, AlarmCode, Dialect, PassKind, Rule, SpindleState};
 
 /// G84 as a family of the interpreter; its state (M29, G98/G99, S) is the machine's
 /// ([`crate::family::Tapping`]).
-#[derive(Debug)]
+#[derive(Debug, Default)]
 pub struct G84;
 
 /// "Words. … G84: Z (W) R P F. X, U, C, K, and anything else: `WORD NOT ALLOWED`."
 const WORDS: Words = Words::of(&[F, P, R, W, Z]);
 
 impl Family for G84 {
-    fn codes(&self) -> &'static [Code] {
-        &[Code { g: 84, dialects: GSK_FANUC }]
-    }
-    fn modal(&self) -> bool {
-        false
-    }
-    fn thread(&self) -> bool {
-        false
-    }
     fn words(&self, _: Kind, _: Dialect) -> Words {
         WORDS
     }

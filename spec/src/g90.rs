@@ -7,7 +7,7 @@
 //! `corpus/g90_example.nc`, read as docs/INTERPRETATION.md, "G90 and G94", says.
 
 use crate::emit::Out;
-use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
+use crate::family::{BlockIn, Family, Kind, Source, State, Words};
 use crate::single_cut::{taper_ok, Cut, Run};
 use crate::words::{alarm, Read, F, N, U, W, X, Z};
 use cycle_vocab::{Alarm, AlarmCode, Dialect, PassKind, Rule};
@@ -23,14 +23,8 @@ pub struct G90 {
 const WORDS: Words = Words::of(&[F, (b'I', Read::Length { lo: -N, hi: N }), U, W, X, Z]);
 
 impl Family for G90 {
-    fn codes(&self) -> &'static [Code] {
-        &[Code { g: 90, dialects: GSK_FANUC }]
-    }
     fn modal(&self) -> bool {
         true
-    }
-    fn thread(&self) -> bool {
-        false
     }
     fn words(&self, _: Kind, _: Dialect) -> Words {
         WORDS

@@ -8,7 +8,7 @@
 use crate::config::Params;
 use crate::emit::{start_angle, Out};
 use crate::exact::round_div;
-use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
+use crate::family::{BlockIn, Family, Kind, Source, State, Words};
 use crate::pullout::{self, Amounts, ThreadLine};
 use crate::tangent::round_mul_tan_degrees;
 use crate::words::{alarm, Read, F, I_TPI, JK_MAX, N, U, W, X, Z};
@@ -49,9 +49,6 @@ const WORDS: Words = Words::of(&[
 ]);
 
 impl Family for G92 {
-    fn codes(&self) -> &'static [Code] {
-        &[Code { g: 92, dialects: GSK_FANUC }]
-    }
     fn modal(&self) -> bool {
         true
     }

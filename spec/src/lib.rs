@@ -115,37 +115,3 @@ fn run_blocks(program: &[u8], machine: &mut program::Machine) -> Option<Alarm> {
 
 #[cfg(test)]
 mod tests;
-#[cfg(test)]
-mod tests_arc;
-#[cfg(test)]
-mod tests_contour;
-#[cfg(test)]
-mod tests_g162;
-#[cfg(test)]
-mod tests_g71;
-#[cfg(test)]
-mod tests_g73;
-#[cfg(test)]
-mod tests_g74;
-#[cfg(test)]
-mod tests_g83;
-#[cfg(test)]
-mod tests_g90;
-#[cfg(test)]
-mod tests_lex;
-#[cfg(test)]
-mod tests_m003_words;
-#[cfg(test)]
-mod tests_operator;
-#[cfg(test)]
-mod tests_operator_cycles;
-#[cfg(test)]
-mod tests_props;
-#[cfg(test)]
-mod tests_spindle;
-#[cfg(test)]
-mod tests_sub;
-#[cfg(test)]
-mod tests_threads_a;
-#[cfg(test)]
-mod tests_util;

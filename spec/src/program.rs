@@ -14,7 +14,7 @@
 //! the spindle state ([`crate::spindle`]) are the interpreter's too.
 
 use crate::emit::{Out, Sink};
-use crate::family::{self, BlockIn, Family, Kind, Source, State, Values, Words};
+use crate::family::{self, BlockIn, Family, Kind, Selection, Source, State, Values, Words};
 use crate::lex::{Block, Number};
 use crate::operator::note::{scope_of_cycle, Scope};
 use crate::spindle;
@@ -31,7 +31,7 @@ enum Motion {
     G01,
     /// G02 (clockwise) or G03: ARC.DIR.
     Arc { cw: bool },
-    /// A modal family's code: the family's index in the table and the code.
+    /// A modal family's code: its row's index in [`family::rows`] and the code.
     Family(usize, u32),
 }
 
@@ -42,7 +42,7 @@ enum Code {
     G01,
     /// G02 (clockwise) or G03.
     Arc { cw: bool },
-    /// A family's code: the family's index in the table and the code.
+    /// A family's code: its row's index in [`family::rows`] and the code.
     Family(usize, u32),
 }
 
@@ -74,6 +74,7 @@ enum MCode {
 pub struct Machine<'c> {
     pub st: State<'c>,
     motion: Motion,
+    /// The handler of each row of [`family::rows`], by its index.
     families: Vec<Box<dyn Family>>,
     /// SUB.RETURN: a subprogram is running (M99 is its end, not `UNSUPPORTED`).
     pub in_subprogram: bool,
@@ -98,7 +99,7 @@ impl<'c> Machine<'c> {
             spindle: Default::default(),
             deferred: None,
         };
-        Machine { st, motion: Motion::G00, families: family::table(), in_subprogram: false }
+        Machine { st, motion: Motion::G00, families: family::rows().map(|row| (row.handler)()).collect(), in_subprogram: false }
     }
 
     /// Whether the sink of the trace asked to stop (PRJ.TRACE).
@@ -163,14 +164,6 @@ impl<'c> Machine<'c> {
         }
     }
 
-    /// The family that has G code `g` (in any dialect).
-    fn family_of(&self, g: u64) -> Option<(usize, family::Code)> {
-        self.families
-            .iter()
-            .enumerate()
-            .find_map(|(i, f)| f.codes().iter().find(|c| u64::from(c.g) == g).map(|c| (i, *c)))
-    }
-
     /// PRJ.SUPPORTED (PRJ), COM.UNITS (M000, M001), PRJ.DIALECT (PRJ): every G and M code of the
     /// block is supported. G00 and G01; under `nc201` G90 and G91 (NC201.ABSINC); each family's
     /// codes under its dialects (another dialect's code is refused under PRJ.DIALECT); the
@@ -192,10 +185,11 @@ impl<'c> Machine<'c> {
                 2 | 3 if nc201 => return Err(alarm(AlarmCode::UnsupportedCode, b'G', Rule::PrjDialect, line)),
                 2 | 3 => Some(Code::Arc { cw: g == 2 }),
                 90 | 91 if nc201 => None,
-                g => match self.family_of(g) {
-                    Some((index, c)) if c.dialects.contains(&config.dialect) => Some(Code::Family(index, c.g)),
-                    Some(_) => return Err(alarm(AlarmCode::UnsupportedCode, b'G', Rule::PrjDialect, line)),
-                    None => match g {
+                g => match family::select(g, config.dialect) {
+                    // A row's code is a u32.
+                    Selection::Row(index) => Some(Code::Family(index, g as u32)),
+                    Selection::OtherDialect => return Err(alarm(AlarmCode::UnsupportedCode, b'G', Rule::PrjDialect, line)),
+                    Selection::None => match g {
                         18 | 40 | 97 | 99 => None,
                         // G50.SMAX, TNRC.CODES (M003): no-motion codes of `gsk` and `fanuc`.
                         41 | 42 | 96 | 98 if nc201 => {

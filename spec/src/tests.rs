@@ -325,3 +325,22 @@ fn max_passes_bound_is_cheap() {
     assert_eq!(t.alarm, Some(Alarm::new(AlarmCode::TooManyPasses, Some(b'Q'), Rule::PrjMaxPass, 3)));
     assert_eq!(t.events.len(), 1);
 }
+
+// The crate's tests by subject; `util` is what they share.
+mod arc;
+mod contour;
+mod g162;
+mod g71;
+mod g73;
+mod g74;
+mod g83;
+mod g90;
+mod lex;
+mod m003_words;
+mod operator;
+mod operator_cycles;
+mod props;
+mod spindle;
+mod sub;
+mod threads_a;
+mod util;

@@ -6,14 +6,14 @@
 //! 5) and emits it (docs/INTERPRETATION.md, "G32, G33, G34").
 
 use crate::emit::{LeadLaw, Out};
-use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
+use crate::family::{BlockIn, Family, Kind, Source, State, Words};
 use crate::g162::long_travel_twice;
 use crate::words::{alarm, lead_max, Read, F, I_TPI, U, W, X, Z};
 use cycle_vocab::{Alarm, AlarmCode, Dialect, Grid, Rule};
 
 /// G32, G33, G34 as a family of the interpreter: modal thread moves; P (G33) and K (G34) are
 /// not kept.
-#[derive(Debug)]
+#[derive(Debug, Default)]
 pub struct ThreadMoves;
 
 /// G32 words: X(U) Z(W) F|I.
@@ -25,9 +25,6 @@ const G33_WORDS: Words =
 const G34_WORDS: Words = Words::of(&[F, I_TPI, (b'K', Read::SignedLead { rule: Rule::G34 }), U, W, X, Z]);
 
 impl Family for ThreadMoves {
-    fn codes(&self) -> &'static [Code] {
-        &[Code { g: 32, dialects: GSK_FANUC }, Code { g: 33, dialects: GSK_FANUC }, Code { g: 34, dialects: GSK_FANUC }]
-    }
     fn modal(&self) -> bool {
         true
     }

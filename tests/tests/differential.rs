@@ -5,8 +5,8 @@
 //! One campaign per cycle family of `cycle_kernel::registry` (a test module each, `g92::conforms`,
 //! …: the family's generator in `cycle_kernel::gen`, every program spelled in the forms the lexer
 //! promises), and one of garbage (random bytes, word soup, corpus mutants): the same alarm,
-//! never a panic. The completeness test (`families.rs`) requires the list of family campaigns to
-//! equal the registry.
+//! never a panic. The list of family campaigns must equal the registry's families
+//! (`campaigns_are_the_registry`).
 //!
 //! Each generated case runs under declared readings drawn for it (`cycle_kernel::gen::drawn`:
 //! each reading the letter half the time), so both engines are compared under every value.
@@ -70,19 +70,31 @@ fn campaign(name: &str, strategy: impl Strategy<Value = Case>, default: u32) {
     }
 }
 
-/// A test module per family, `<family>::conforms`, each the family's campaign.
+/// A test module per family, `<family>::conforms`, each the family's campaign, and the list of
+/// them, `CAMPAIGNS`.
 macro_rules! family_campaigns {
-    ($($family:ident),* $(,)?) => {$(
-        mod $family {
-            #[test]
-            fn conforms() {
-                super::family_campaign(stringify!($family));
+    ($($family:ident),* $(,)?) => {
+        $(
+            mod $family {
+                #[test]
+                fn conforms() {
+                    super::family_campaign(stringify!($family));
+                }
             }
-        }
-    )*};
+        )*
+        const CAMPAIGNS: &[&str] = &[$(stringify!($family)),*];
+    };
 }
 
 family_campaigns!(g92, g76, g78, f76, g162, g32, g90, g94, g71, g72, g70, g73, g74, g75, g83, g84);
+
+/// Every registry family has its campaign here, and each campaign is a registry family's, in
+/// the registry's order.
+#[test]
+fn campaigns_are_the_registry() {
+    let registered: Vec<&str> = registry::FAMILIES.iter().map(|f| f.name).collect();
+    assert_eq!(CAMPAIGNS, registered, "the family campaigns of differential.rs are not the registry's families");
+}
 
 /// The campaign of the registry family `name`.
 fn family_campaign(name: &str) {

@@ -2,12 +2,12 @@
 //! (G162.FORMAT) and missing words in the register's order.
 
 use super::{expand, G162Block};
-use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words};
+use crate::family::{BlockIn, Family, Kind, Source, State, Words};
 use crate::words::{alarm, Read, F, N, X};
 use cycle_vocab::{Alarm, AlarmCode, Dialect, Rule};
 
 /// G162 has no memory of its own (H is not modal; F is the shared modal feed).
-#[derive(Debug)]
+#[derive(Debug, Default)]
 pub struct G162;
 
 /// G162.FORMAT (M004): `G162 X Z H [P Q] [V] [W] [A] [F] [B] [I] [J]`, each word read as the
@@ -28,15 +28,6 @@ const WORDS: Words = Words::of(&[
 ]);
 
 impl Family for G162 {
-    fn codes(&self) -> &'static [Code] {
-        &[Code { g: 162, dialects: &[Dialect::Nc201] }]
-    }
-    fn modal(&self) -> bool {
-        false
-    }
-    fn thread(&self) -> bool {
-        false
-    }
     fn words(&self, _: Kind, _: Dialect) -> Words {
         WORDS
     }

@@ -2,7 +2,7 @@
 //! interpreter: one-shot codes whose first block is kept per code (G76.FORMAT).
 
 use super::{check_p_digits, expand, Cycle, FirstBlock, SecondBlock};
-use crate::family::{BlockIn, Code, Family, Kind, Source, State, Words, GSK_FANUC};
+use crate::family::{BlockIn, Family, Kind, Source, State, Words};
 use crate::lex::Number;
 use crate::words::{alarm, integer, Read, F, I_TPI, N, U, W, X, Z};
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Rule};
@@ -75,13 +75,6 @@ fn cycle_of(g: u32) -> Cycle {
 }
 
 impl Family for Multipass {
-    fn codes(&self) -> &'static [Code] {
-        // PRJ.DIALECT: G78 is a GSK code.
-        &[Code { g: 76, dialects: GSK_FANUC }, Code { g: 78, dialects: &[Dialect::Gsk] }]
-    }
-    fn modal(&self) -> bool {
-        false
-    }
     fn thread(&self) -> bool {
         true
     }

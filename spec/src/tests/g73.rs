@@ -2,7 +2,7 @@
 //! out by hand from docs/INTERPRETATION.md, "G73 (pattern repeating)", not taken from the
 //! spec's output.
 
-use crate::tests_util::*;
+use crate::tests::util::*;
 use crate::expand;
 use cycle_vocab::text::Trace;
 use cycle_vocab::readings::G73C;

@@ -1,7 +1,7 @@
 //! The program words of the stock-removal cycles (M003): sequence numbers, G50, G96/G98 and the
 //! nose-radius codes, checked against docs/INTERPRETATION.md, "Program words".
 
-use crate::tests_util::{alarm_with as alarm_of};
+use crate::tests::util::{alarm_with as alarm_of};
 use crate::expand;
 use cycle_vocab::text::Trace;
 use cycle_vocab::{AlarmCode, Config, Dialect, MoveKind, Params, Rule};

@@ -1,7 +1,7 @@
 //! Operator events in G76, G78 and G162, the operator alarms, the corpus replayed, and a
 //! property of G92.HOLD: every expected run below is worked out from the register by hand.
 
-use crate::tests_operator::{bit6, hold, lines, operator_alarm, play, reset, single, u_lines, EXAMPLE};
+use crate::tests::operator::{bit6, hold, lines, operator_alarm, play, reset, single, u_lines, EXAMPLE};
 use crate::expand;
 use cycle_vocab::readings::ThreadZRef;
 use cycle_vocab::{Action, Alarm, AlarmCode, Config, Dialect, Event, Params, Readings, Rule};

@@ -1,7 +1,7 @@
 //! Hand-checked G162 (M004) and G32/G33/G34 (M003) programs: every number below is worked out
 //! from docs/INTERPRETATION.md by hand, not taken from the spec's output.
 
-use crate::tests_util::{alarm_with as alarm_of, Expect};
+use crate::tests::util::{alarm_with as alarm_of, Expect};
 use crate::expand;
 use cycle_vocab::text::Trace;
 use cycle_vocab::readings::G162Lead;

@@ -3,7 +3,7 @@
 //! `thread.zref` (the letter `start` the default). No number below is taken from the spec's output.
 
 use crate::expand;
-use crate::tests_util::{alarm_with, run, run_with, Expect};
+use crate::tests::util::{alarm_with, run, run_with, Expect};
 use cycle_vocab::readings::ThreadZRef;
 use cycle_vocab::text::Trace;
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Event, MoveKind, Params, PassKind, Readings, Rule};

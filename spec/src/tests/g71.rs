@@ -48,7 +48,7 @@ fn layer71(x: i64, z: i64) -> Vec<M> {
 ///   the ten the register's example sentence lists (its own existence rule excludes X1).
 #[test]
 fn example1_g71_layers_semi_and_g70() {
-    let t = run(include_str!("../../corpus/g71_example.nc"));
+    let t = run(include_str!("../../../corpus/g71_example.nc"));
     let ends = [(37_000, -60_300), (33_000, -60_300), (29_000, -47_593), (25_000, -46_795), (21_000, -45_115)];
     let ends2 = [(17_000, -24_467), (13_000, -17_800), (9_000, -1_809), (5_000, -281)];
     let mut expect = vec![(Rapid, 41_000, 0)];
@@ -104,7 +104,7 @@ fn example1_g71_layers_semi_and_g70() {
 /// Layer path: infeed in Z at rapid (ns G00), cut, retract to (x + 2, Z + 1), rapid to X41.
 #[test]
 fn example2_g72_layers() {
-    let t = run(include_str!("../../corpus/g72_example.nc"));
+    let t = run(include_str!("../../../corpus/g72_example.nc"));
     let p = passes(&t);
     assert_eq!(p.len(), 31 + 1 + 1);
     assert!(p[..31].iter().enumerate().all(|(k, p)| *p == (k as u32 + 1, PassKind::Rough, 2_000 * (k as i64 + 1), Rule::G72Layer)));
@@ -136,22 +136,22 @@ fn example2_g72_layers() {
 #[test]
 fn feature_programs_run() {
     let programs = [
-        include_str!("../../tests/programs/g71_bore.nc"),
-        include_str!("../../tests/programs/g70_arcs_ik.nc"),
-        include_str!("../../tests/programs/g71_vertex_on_layer.nc"),
-        include_str!("../../tests/programs/g71_deep_cut.nc"),
-        include_str!("../../tests/programs/g70_after_g71.nc"),
+        include_str!("../../../tests/programs/g71_bore.nc"),
+        include_str!("../../../tests/programs/g70_arcs_ik.nc"),
+        include_str!("../../../tests/programs/g71_vertex_on_layer.nc"),
+        include_str!("../../../tests/programs/g71_deep_cut.nc"),
+        include_str!("../../../tests/programs/g70_after_g71.nc"),
     ];
     for p in programs {
         run(p);
     }
     let inch = Config { grid: Grid { units: Units::Inch, increment: Increment::Isb }, ..Config::default() };
-    assert_eq!(expand(include_str!("../../tests/programs/g72_inch.nc").as_bytes(), &inch).alarm, None);
+    assert_eq!(expand(include_str!("../../../tests/programs/g72_inch.nc").as_bytes(), &inch).alarm, None);
     let isc = Config { grid: Grid { units: Units::Metric, increment: Increment::Isc }, ..Config::default() };
-    let t = expand(include_str!("../../tests/programs/g71_isc.nc").as_bytes(), &isc);
+    let t = expand(include_str!("../../../tests/programs/g71_isc.nc").as_bytes(), &isc);
     assert_eq!(t.alarm, None);
     // On ISB the ISC program's four decimals are PRECISION on its first such word.
-    let isb = expand(include_str!("../../tests/programs/g71_isc.nc").as_bytes(), &Config::default());
+    let isb = expand(include_str!("../../../tests/programs/g71_isc.nc").as_bytes(), &Config::default());
     assert_eq!(isb.alarm.map(|a| (a.code, a.rule)), Some((cycle_vocab::AlarmCode::Precision, Rule::ComUnits)));
 }
 
@@ -162,7 +162,7 @@ fn feature_programs_run() {
 /// 2.6·2/4 = −1.2. X19 … X28 on the bottom face at Z−29.9. Retracts toward the axis: X − 1.
 #[test]
 fn bore_layers() {
-    let t = run(include_str!("../../tests/programs/g71_bore.nc"));
+    let t = run(include_str!("../../../tests/programs/g71_bore.nc"));
     let cuts: Vec<(i64, i64)> = t.moves().filter(|m| m.rule == Rule::G71Layer && m.z != 2_000).map(|m| (m.x, m.z)).collect();
     assert_eq!(cuts, vec![(19_000, -29_900), (22_000, -29_900), (25_000, -29_900), (28_000, -29_900), (31_000, -15_974), (34_000, -15_009), (37_000, -1_200)]);
     let m = moves(&t);
@@ -174,7 +174,7 @@ fn bore_layers() {
 /// at −20 − 4·5/8 = −22.5.
 #[test]
 fn vertex_on_layer() {
-    let t = run(include_str!("../../tests/programs/g71_vertex_on_layer.nc"));
+    let t = run(include_str!("../../../tests/programs/g71_vertex_on_layer.nc"));
     let cuts: Vec<(i64, i64)> = t.moves().filter(|m| m.rule == Rule::G71Layer && m.z != 2_000).map(|m| (m.x, m.z)).collect();
     assert_eq!(cuts, vec![(46_000, -35_000), (42_000, -35_000), (38_000, -35_000), (34_000, -22_500), (30_000, -20_000), (26_000, -10_000), (22_000, -10_000)]);
 }
@@ -183,7 +183,7 @@ fn vertex_on_layer() {
 /// pass is pass 1 and starts at A.
 #[test]
 fn deep_cut_has_only_the_semi_pass() {
-    let t = run(include_str!("../../tests/programs/g71_deep_cut.nc"));
+    let t = run(include_str!("../../../tests/programs/g71_deep_cut.nc"));
     assert_eq!(passes(&t), vec![(1, PassKind::Semi, 7_600, Rule::G71Lastpass)]);
     assert_eq!(moves(&t)[1], (Feed, 34_400, 2_100));
 }
@@ -193,7 +193,7 @@ fn deep_cut_has_only_the_semi_pass() {
 /// is the cycle block's own F.
 #[test]
 fn g70_steps_and_feeds() {
-    let t = run(include_str!("../../tests/programs/g70_after_g71.nc"));
+    let t = run(include_str!("../../../tests/programs/g70_after_g71.nc"));
     let finish: Vec<_> = t.moves().filter(|m| m.rule == Rule::G70Path).map(|m| (m.x, m.z, m.feed)).collect();
     assert_eq!(
         finish,

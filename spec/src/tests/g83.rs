@@ -2,7 +2,7 @@
 //! is worked out by hand from docs/INTERPRETATION.md, "G83 and G84", not taken from the spec's
 //! output.
 
-use crate::tests_util::*;
+use crate::tests::util::*;
 use crate::expand;
 use cycle_vocab::text::Trace;
 use cycle_vocab::{AlarmCode, Config, Dialect, Event, MoveKind, PassKind, Rule, SpindleState};
@@ -184,14 +184,14 @@ fn g83_g84_alarms() {
 #[test]
 fn lexable_feature_files_are_the_blocks_checked_above() {
     let cases: &[(&str, &str)] = &[
-        (include_str!("../../corpus/g84_example.nc"), "G50 X60 Z40\nG00 X0 Z0\nG98M29S60\nG84Z-21R2F60\nG80\nG00 X60 Z40\n"),
+        (include_str!("../../../corpus/g84_example.nc"), "G50 X60 Z40\nG00 X0 Z0\nG98M29S60\nG84Z-21R2F60\nG80\nG00 X60 Z40\n"),
         (
-            include_str!("../../tests/programs/g83_edges.nc"),
+            include_str!("../../../tests/programs/g83_edges.nc"),
             "G00 X0 Z3\nG83 Z-10 R-1 P500 F0.1\nG83 Z-4 R-1 Q9000 F0.1\nG83 Z-5.001 Q1000 F0.1\nG00 X50 Z50\n",
         ),
-        (include_str!("../../tests/programs/g74_one_peck.nc"), "G00 X0 Z2\nG74 R1\nG74 Z-3 Q10 F0.1\nG00 X50 Z50\n"),
+        (include_str!("../../../tests/programs/g74_one_peck.nc"), "G00 X0 Z2\nG74 R1\nG74 Z-3 Q10 F0.1\nG00 X50 Z50\n"),
         (
-            include_str!("../../tests/programs/g73_d1.nc"),
+            include_str!("../../../tests/programs/g73_d1.nc"),
             "G00 X40 Z5\nG73 U6 W2 R1\nG73 P10 Q40 U0.4 W0.1 F0.2\nN10 G00 X10 Z1\nN20 G01 Z-10\nN30 G02 X20 Z-15 R5\nN40 G01 X30 Z-25\nG00 X60 Z50\n",
         ),
     ];

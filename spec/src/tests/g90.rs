@@ -1,7 +1,7 @@
 //! Hand-checked G90 and G94 (M003) programs: every number below is worked out from
 //! docs/INTERPRETATION.md, "G90 and G94", by hand, not taken from the spec's output.
 
-use crate::tests_util::{alarm_with as alarm_of, passes, Expect};
+use crate::tests::util::{alarm_with as alarm_of, passes, Expect};
 use crate::expand;
 use cycle_vocab::text::Trace;
 use cycle_vocab::readings::G94K;
@@ -39,7 +39,7 @@ fn g90_seed_taper() {
 /// the G94 face steps to Z−3.5, −7, −10.
 #[test]
 fn corpus_examples() {
-    let t = run(include_str!("../../corpus/g90_example.nc"));
+    let t = run(include_str!("../../../corpus/g90_example.nc"));
     let straight = "(PASS 1 ROUGH DEPTH 5.000)\nG00 X40.000 Z2.000\nG01 X40.000 Z-40.000 F0.3000\n\
                     G01 X50.000 Z-40.000 F0.3000\nG00 X50.000 Z2.000\n";
     let g = gcode(&t);
@@ -48,7 +48,7 @@ fn corpus_examples() {
     assert_eq!(t.moves().next().map(|m| m.rule), Some(Rule::PrjModal));
     assert_eq!(t.moves().nth(1).map(|m| m.rule), Some(Rule::G90Path)); // ① of a straight cut
 
-    let t = run(include_str!("../../corpus/g94_example.nc"));
+    let t = run(include_str!("../../../corpus/g94_example.nc"));
     let face = |n: u32, z: &str, depth: &str| {
         format!(
             "(PASS {n} ROUGH DEPTH {depth})\nG00 X50.000 Z{z}\nG01 X40.000 Z{z} F0.3000\n\
@@ -70,7 +70,7 @@ fn corpus_examples() {
 /// G90.TAPER and G94.TAPER: the four sign cases and the equality edge, in the feature programs.
 #[test]
 fn taper_signs() {
-    let t = run(include_str!("../../tests/programs/g90_taper_signs.nc"));
+    let t = run(include_str!("../../../tests/programs/g90_taper_signs.nc"));
     let starts: Vec<i64> = passes(&t).iter().map(|p| p.2).collect();
     // |A.x − C.x| on diameter: 50−34, 44−50, 50−50; 36−20, 26−20, 20−20.
     assert_eq!(starts, vec![16_000, 6_000, 0, 16_000, 6_000, 0]);
@@ -85,7 +85,7 @@ fn taper_signs() {
 
     // g94_taper.nc is written for `g94.k=start-minus-end` (FANUC: K = start Z − end Z).
     let fanuc_k = g94k(G94K::StartMinusEnd);
-    let t = expand(include_bytes!("../../tests/programs/g94_taper.nc"), &fanuc_k);
+    let t = expand(include_bytes!("../../../tests/programs/g94_taper.nc"), &fanuc_k);
     let z_depths: Vec<i64> = passes(&t).iter().map(|p| p.2 / 2).collect();
     assert_eq!(z_depths, vec![5_000, 7_000, 6_000, 0, 8_000]);
     let over = (AlarmCode::Geometry, Some('K'), Rule::G94Taper, 2);
@@ -105,7 +105,7 @@ fn g94k(k: G94K) -> Config {
 /// FANUC's reading starts the same block at Z−7).
 #[test]
 fn g94_k_letter() {
-    let src = include_str!("../../tests/programs/g94_k_letter.nc");
+    let src = include_str!("../../../tests/programs/g94_k_letter.nc");
     let t = run(src);
     assert_eq!(t, expand(src.as_bytes(), &g94k(G94K::EndMinusStart)));
     let starts: Vec<i64> = t.moves().filter(|m| m.rule == Rule::G94Taper).map(|m| m.z).collect();
@@ -126,7 +126,7 @@ fn g94_k_letter() {
 /// between blocks does not end the run; G94, G01 and G00 start a new one.
 #[test]
 fn modal_runs() {
-    let t = run(include_str!("../../tests/programs/g90_modal_runs.nc"));
+    let t = run(include_str!("../../../tests/programs/g90_modal_runs.nc"));
     let cycles: Vec<(u32, i64, Rule)> =
         passes(&t).iter().filter(|p| matches!(p.3, Rule::G90Path | Rule::G94Path)).map(|p| (p.0, p.2, p.3)).collect();
     assert_eq!(
@@ -220,7 +220,7 @@ fn nc201() {
 #[test]
 fn other_grids() {
     let inch = Config { grid: Grid { units: Units::Inch, increment: Increment::Isb }, ..Config::default() };
-    let t = expand(include_bytes!("../../tests/programs/g90_inch.nc"), &inch);
+    let t = expand(include_bytes!("../../../tests/programs/g90_inch.nc"), &inch);
     assert_eq!(t.alarm, None);
     // 0.0001 in increments; F0.01 in = 1 000 lead counts of 0.00001 in. Pass 3: C.x = 1.6 − 2·0.05.
     assert_eq!(passes(&t).iter().map(|p| p.2).collect::<Vec<_>>(), vec![2_000, 3_000, 5_000]);

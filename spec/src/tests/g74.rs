@@ -2,7 +2,7 @@
 //! is worked out by hand from docs/INTERPRETATION.md, "G74 … and G75", not taken from the
 //! spec's output.
 
-use crate::tests_util::*;
+use crate::tests::util::*;
 use crate::expand;
 use cycle_vocab::text::Trace;
 use cycle_vocab::readings::G75Relief;
@@ -26,7 +26,7 @@ use MoveKind::{Feed, Rapid};
 /// to Z−8, rapid to Z−7, feed to Z−12 …, then the rapid back to Z2"; one column, depth 2·14.
 #[test]
 fn example4_pecks() {
-    let t = run(include_str!("../../corpus/g74_example.nc"));
+    let t = run(include_str!("../../../corpus/g74_example.nc"));
     let expect = vec![
         (Rapid, 0, 2_000),
         (Feed, 0, -3_000),

@@ -1,7 +1,7 @@
 //! Every alarm of docs/INTERPRETATION.md's contour sections (CNT.*, G70, G71, G72) with its
 //! code, word, rule and line, the cycle check order, CNT.FLOW, and the layer ends on arcs.
 
-use crate::tests_util::*;
+use crate::tests::util::*;
 use crate::contour::Contour;
 use crate::expand;
 use crate::stock_removal::layers::arc_crossing;
@@ -240,7 +240,7 @@ fn layer_ends_on_arcs() {
 /// arcs cover the four quadrants in both directions, in the ordinary run and in G70's.
 #[test]
 fn g70_arcs_by_ik() {
-    let t = expand(include_str!("../../tests/programs/g70_arcs_ik.nc").as_bytes(), &Config::default());
+    let t = expand(include_str!("../../../tests/programs/g70_arcs_ik.nc").as_bytes(), &Config::default());
     assert_eq!(t.alarm, None);
     let arcs: Vec<_> = t.moves().filter(|m| m.cx != 0).map(|m| (m.kind, m.x, m.z, m.cx, m.cz, m.rule)).collect();
     assert_eq!(arcs.len(), 16);

@@ -3,7 +3,7 @@
 //! and G163", and `003_…` lines 6–13.
 
 use crate::expand;
-use crate::tests_util::{alarm_of, alarm_with, run, run_with, Expect};
+use crate::tests::util::{alarm_of, alarm_with, run, run_with, Expect};
 use cycle_vocab::readings::G96Rapid;
 use cycle_vocab::{AlarmCode::*, Config, Dialect, MoveKind, Rule};
 

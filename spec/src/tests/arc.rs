@@ -2,7 +2,7 @@
 //! hand, every quadrant by I/K and by R in both directions, ties, the word limits, the checks
 //! and their order.
 
-use crate::tests_util::{alarm_with as alarm_of};
+use crate::tests::util::{alarm_with as alarm_of};
 use crate::arc::{centre_r, turns, Point};
 use crate::expand;
 use cycle_vocab::text::Trace;

@@ -2,7 +2,7 @@
 //! docs/INTERPRETATION.md, "Subprograms: M98, M99", and `003_…` lines 144–145.
 
 use crate::expand;
-use crate::tests_util::{alarm_of, alarm_with, run, run_with, Expect};
+use crate::tests::util::{alarm_of, alarm_with, run, run_with, Expect};
 use cycle_vocab::{AlarmCode::*, Config, Dialect, MoveKind, Params, Rule};
 
 /// The end points (X, Z) of the moves of a clean run.
