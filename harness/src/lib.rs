@@ -3,16 +3,20 @@
 //!
 //! One body, many uses: a harness body is a generic function over a [`Source`] of values that
 //! states its properties with [`check!`] and [`cover!`]. Kani makes each draw symbolic
-//! (`KaniSource`, in `cycle-proofs`); under `cargo test` the [`exhaustive`] driver enumerates
+//! (`KaniSource`, under `cfg(kani)`); under `cargo test` the [`exhaustive`] driver enumerates
 //! every combination of draws within a small scope and the [`random`] driver samples the full
 //! ranges; under libFuzzer the [`FuzzSource`] reads each draw from the fuzzer's bytes; a
 //! committed regression's draws are replayed by the [`ReplaySource`].
 //!
-//! Nothing here depends on the engines.
+//! [`property!`] states a property once — its body, rules, Kani harness and driver tests — and
+//! gives the [`Property`] entry a crate lists. Nothing here depends on the engines.
 #![forbid(unsafe_code)]
 
 mod bytes;
 mod exhaustive;
+#[cfg(kani)]
+mod kani;
+mod property;
 mod random;
 mod replay;
 mod report;
@@ -20,6 +24,9 @@ mod source;
 
 pub use bytes::FuzzSource;
 pub use exhaustive::{exhaustive, Exhaustive};
+#[cfg(kani)]
+pub use kani::KaniSource;
+pub use property::{assert_listed, drive, CheckedBy, Property};
 pub use random::{random, random_cases, Random, DEFAULT_RANDOM_CASES};
 pub use replay::ReplaySource;
 pub use report::{Failure, Report};

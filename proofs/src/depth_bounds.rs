@@ -18,9 +18,10 @@
 //! whole-sequence view (cuts, the last depth, the count) over the first K + 1 passes.
 //!
 //! **Not a Kani proof.** Kani 0.61.0 / CBMC 6.4.0 ran out of memory (10–13 GB) in symbolic execution (issue #25), for the reasons of `depth_step_monotone`. The per-step shape is the TEST `depth_step_clamp`; the whole-sequence view and the pass count are z3's (smt/ lemmas 11, 12) and this body's drivers'. The body runs under `cargo test` (bounded-exhaustive and random
-//! drivers); the scope named `KANI` below is what a Kani run would take, kept for the drivers.
+//! drivers); its Kani harness (the scope named `KANI` below) is a proof harness only with the
+//! feature `kani-attempts`.
 //!
-//! **Former Kani bounds.** K = [`KANI`]`.max_passes` = 4: the harness loop runs at most K + 1 = 5
+//! **Kani bounds of the attempt.** K = [`KANI`]`.max_passes` = 4: the harness loop runs at most K + 1 = 5
 //! times; the switch pass's binary search (only for words beyond 2^31, outside the legal
 //! ranges) at most 33; `isqrt` is loop-free. So `#[kani::unwind(65)]` covers every loop. Parameters are symbolic over the full legal
 //! ranges.
@@ -99,35 +100,20 @@ pub fn body<S: Source, Sch: Schedule>(src: &mut S, sch: &Sch, scope: &Scope) -> 
     Ok(())
 }
 
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::schedule::Production;
-    use crate::source::{exhaustive, random, random_cases};
-
-    /// Every Δd, Δdmin, T ≤ 16, both modes, every limit ≤ 200, iterating up to 201 passes of
-    /// schedules of up to (T/Δd)² = 256 passes: most schedules are examined whole.
-    #[test]
-    fn depth_bounds_exhaustive() {
-        let scope = Scope { max_len: 16, max_passes: 200 };
-        // limit takes its 16 smallest and 16 largest values.
-        let r = exhaustive(16, 2_000_000, |s| body(s, &Production, &scope)).assert_ok();
-        println!("{r}");
-    }
-
-    /// The edges of the legal ranges with K = 64.
-    #[test]
-    fn depth_bounds_exhaustive_edges() {
-        let scope = Scope { max_len: MAX_LENGTH, max_passes: 64 };
-        let r = exhaustive(3, 1_000_000, |s| body(s, &Production, &scope)).assert_ok();
-        println!("{r}");
-    }
-
-    #[test]
-    fn depth_bounds_random() {
-        let scope = Scope { max_len: MAX_LENGTH, max_passes: 200 };
-        let r = random(0x5eed_0002, random_cases(2), |s| body(s, &Production, &scope)).assert_ok();
-        println!("{r}");
+cycle_harness::property! {
+    pub const PROPERTY = depth_bounds in crate::PROPERTIES {
+        rules: ["G76.DEPTH.LAST", "G76.DEPTH.MIN", "G78.DEPTHMODE", "PRJ.MAXPASS"],
+        states: "The first K + 1 passes of every schedule: numbered 1, 2, …, depths in 1…k − d and never decreasing, every cut but the last ≥ Δdmin (= Δd in constant mode), the closed-form pass count equal to the iterated one.",
+        body: |src, scope| body(src, &crate::schedule::Production, &scope),
+        /// The Kani attempt (a TEST: out of memory; built as a harness only with `kani-attempts`).
+        kani: test(KANI) { unwind: 65, why: "out of memory (10–13 GB) in symbolic execution" },
+        tests {
+            /// Every Δd, Δdmin, T ≤ 16, both modes, every limit ≤ 200, iterating up to 201 passes of
+            /// schedules of up to (T/Δd)² = 256 passes: most schedules are examined whole.
+            fn depth_bounds_exhaustive = exhaustive(16, 2_000_000) on Scope { max_len: 16, max_passes: 200 };
+            /// The edges of the legal ranges with K = 64.
+            fn depth_bounds_exhaustive_edges = exhaustive(3, 1_000_000) on Scope { max_len: MAX_LENGTH, max_passes: 64 };
+            fn depth_bounds_random = random(0x5eed_0002, 2) on Scope { max_len: MAX_LENGTH, max_passes: 200 };
+        }
     }
 }

@@ -5,8 +5,8 @@
 //!
 //! **Not a Kani proof.** Kani 0.61.0 / CBMC 6.4.0 with both stubs reached no verdict: CaDiCaL
 //! 350 s, Kissat 4.0.1 450 s (proofs/README.md, "TESTs"); `Schedule::new`'s 128-bit reach
-//! quotient stays in every path. The stubs are kept for the next attempt (the wrapper that
-//! was run is at the end of this file); under `cargo test` the real functions run. Its
+//! quotient stays in every path. The stubs and the harness that was run are kept for the next attempt (its `property!`,
+//! a proof harness with `kani-attempts`); under `cargo test` the real functions run. Its
 //! properties are Kani-proved on a symbolic schedule instead (`schedule_step`, `schedule_count`:
 //! `from_parts` in place of `new`, the depths stubbed as the z3 lemmas constrain them).
 //!
@@ -224,44 +224,20 @@ pub mod stubs {
     }
 }
 
-// No Kani wrapper: a TEST (see the module documentation). The wrapper that was run:
-//
-//     #[cfg(kani)]
-//     #[kani::proof]
-//     #[kani::unwind(2)]
-//     #[kani::solver(kissat)]   // also tried without: CaDiCaL
-//     #[kani::stub(cycle_impl::schedule::root, stubs::root_spec)]
-//     #[kani::stub(cycle_impl::schedule::switch_pass, stubs::switch_pass_spec)]
-//     fn depth_step() {
-//         let _ = body(&mut crate::source::KaniSource, &crate::schedule::Production, &FULL);
-//     }
-//
-// run with `cargo kani -p cycle-proofs --harness depth_step -Z stubbing`.
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::schedule::Production;
-    use crate::source::{exhaustive, random, random_cases};
-
-    /// Δd, Δdmin, T ≤ 6 whole, pass numbers and depths their 4 smallest and largest values.
-    #[test]
-    fn depth_step_exhaustive_small() {
-        let scope = Scope { max_len: 6, max_n: 40 };
-        let r = exhaustive(4, 2_000_000, |s| body(s, &Production, &scope)).assert_ok();
-        println!("{r}");
-    }
-
-    /// The edges of the legal ranges.
-    #[test]
-    fn depth_step_exhaustive_edges() {
-        let r = exhaustive(2, 2_000_000, |s| body(s, &Production, &FULL)).assert_ok();
-        println!("{r}");
-    }
-
-    #[test]
-    fn depth_step_random() {
-        let r = random(0x5eed_0011, random_cases(2), |s| body(s, &Production, &FULL)).assert_ok();
-        println!("{r}");
+cycle_harness::property! {
+    pub const PROPERTY = depth_step in crate::PROPERTIES {
+        rules: ["G76.DEPTH.1", "G76.DEPTH.MIN", "G76.DEPTH.LAST", "G78.DEPTHMODE"],
+        states: "One step of the production depth schedule (first, or next of any pass) over the full legal ranges, with root and switch_pass stubbed by their specifications (z3 lemmas 01, 02, 07; impl's unit tests): numbered n + 1, depth in 1…k − d, last exactly at k − d and named G76.DEPTH.LAST, a minimum cut adds exactly Δdmin, a constant step adds Δd (depth n·Δd), a G76.DEPTH.1 depth is the root of n·Δd², nothing after the last or past pass 2^32 − 1.",
+        body: |src, scope| body(src, &crate::schedule::Production, &scope),
+        /// The Kani harness that was run (Kissat; also tried with CaDiCaL): no verdict, so a TEST,
+        /// a proof harness only with `kani-attempts` (`-Z stubbing`).
+        kani: test(FULL) { unwind: 2, solver: kissat, stubs: [cycle_impl::schedule::root => stubs::root_spec, cycle_impl::schedule::switch_pass => stubs::switch_pass_spec], why: "no verdict: CaDiCaL, 350 s of CBMC (454 979 variables, 2.26 M clauses; ten queries answered, the eleventh open for 4 min; 0.59 GB); Kissat 4.0.1, 450 s (thirteen queries, the fourteenth open for 6 min; 0.25 GB) — stopped by hand to free the machine" },
+        tests {
+            /// Δd, Δdmin, T ≤ 6 whole, pass numbers and depths their 4 smallest and largest values.
+            fn depth_step_exhaustive_small = exhaustive(4, 2_000_000) on Scope { max_len: 6, max_n: 40 };
+            /// The edges of the legal ranges.
+            fn depth_step_exhaustive_edges = exhaustive(2, 2_000_000) on FULL;
+            fn depth_step_random = random(0x5eed_0011, 2) on FULL;
+        }
     }
 }

@@ -4,8 +4,8 @@
 //!
 //! **Not a Kani proof.** Written for Kani (the stubs below), but Kani 0.61.0 / CBMC 6.4.0 reached
 //! no verdict here: with the pass count, none in 300 s (1.55 M variables, 8.2 M clauses); without
-//! it ([`KANI`]), none in 480 s (0.85 M variables, 4.4 M clauses). So it has no Kani wrapper; the
-//! drivers run it, and the stubs are kept for the next attempt (e.g. contracts on `Schedule::new`).
+//! it ([`KANI`]), none in 480 s (0.85 M variables, 4.4 M clauses). So its Kani harness is a proof
+//! harness only with `kani-attempts`; the drivers run it, and the stubs are kept for the next attempt (e.g. contracts on `Schedule::new`).
 //!
 //! **Property.** For all legal Δd (1…N), Δdmin (0…N), T = k − d (1…N), N = 999 999 999,
 //! degressive or constant, and every pass `prev` the schedule can be asked about — any pass
@@ -163,31 +163,20 @@ pub fn unreachable_for_legal_words(_a: u128, _c: u128) -> u64 {
     u64::MAX
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::schedule::Production;
-    use crate::source::{exhaustive, random, random_cases};
-
-    /// Δd, Δdmin, T ≤ 6 whole, pass numbers, depths and limits their 3 smallest and largest
-    /// values.
-    #[test]
-    fn depth_step_clamp_exhaustive_small() {
-        let scope = Scope { max_len: 6, max_n: 40, count: true };
-        let r = exhaustive(3, 2_000_000, |s| body(s, &Production, &scope)).assert_ok();
-        println!("{r}");
-    }
-
-    /// The edges of the legal ranges.
-    #[test]
-    fn depth_step_clamp_exhaustive_edges() {
-        let r = exhaustive(2, 2_000_000, |s| body(s, &Production, &FULL)).assert_ok();
-        println!("{r}");
-    }
-
-    #[test]
-    fn depth_step_clamp_random() {
-        let r = random(0x5eed_0010, random_cases(2), |s| body(s, &Production, &FULL)).assert_ok();
-        println!("{r}");
+cycle_harness::property! {
+    pub const PROPERTY = depth_step_clamp in crate::PROPERTIES {
+        rules: ["G76.DEPTH.LAST", "G76.DEPTH.MIN", "G78.DEPTHMODE", "PRJ.MAXPASS"],
+        states: "Every step of the production depth schedule (first, or next of any pass): numbered n + 1, depth in 1…k − d, last exactly at k − d and named G76.DEPTH.LAST, a minimum-cut step adds exactly Δdmin, a constant step is n·Δd, nothing after the last or past pass 2^32 − 1; the pass count is at most the limit and does not depend on it.",
+        body: |src, scope| body(src, &crate::schedule::Production, &scope),
+        /// The Kani attempt with the two stubs above (a TEST: no verdict; a harness only with `kani-attempts`).
+        kani: test(KANI) { unwind: 5, stubs: [cycle_impl::fixed::isqrt => isqrt_spec, cycle_impl::schedule::switch_search => unreachable_for_legal_words], why: "no verdict in 300 s with `rough_pass_count` (1.55 M variables, 8.2 M clauses), none in 480 s without it (0.85 M variables, 4.4 M clauses), `isqrt` and the switch search stubbed" },
+        tests {
+            /// Δd, Δdmin, T ≤ 6 whole, pass numbers, depths and limits their 3 smallest and largest
+            /// values.
+            fn depth_step_clamp_exhaustive_small = exhaustive(3, 2_000_000) on Scope { max_len: 6, max_n: 40, count: true };
+            /// The edges of the legal ranges.
+            fn depth_step_clamp_exhaustive_edges = exhaustive(2, 2_000_000) on FULL;
+            fn depth_step_clamp_random = random(0x5eed_0010, 2) on FULL;
+        }
     }
 }

@@ -31,9 +31,10 @@
 //! every schedule is monotone — for all n, not only the first few.
 //!
 //! **Not a Kani proof.** Kani 0.61.0 / CBMC 6.4.0 ran out of memory (10–13 GB) in symbolic execution (3 M steps, issue #25): the closed form it checks rests on nonlinear identities of 30- to 120-bit values (squares, a²/c²) that no SAT encoding decides in useful time. `depth_step_clamp` (the shape of every step, also a TEST) did not finish under Kani either; the closed form and monotonicity are z3's (smt/ lemmas 01–12) and this body's drivers'. The body runs under `cargo test` (bounded-exhaustive and random
-//! drivers); the scope named `KANI` below is what a Kani run would take, kept for the drivers.
+//! drivers); its Kani harness (the scope named `KANI` below) is a proof harness only with the
+//! feature `kani-attempts`.
 //!
-//! **Former Kani bounds.** Everything is symbolic over the full legal ranges. The loops are the
+//! **Kani bounds of the attempt.** Everything is symbolic over the full legal ranges. The loops are the
 //! switch pass's binary search in `cycle_impl::schedule` (at most 33 iterations, and only for
 //! words beyond 2^31) and the root's walk over at most 4 candidates, so `#[kani::unwind(65)]`.
 //! Our own model is loop-free.
@@ -211,32 +212,20 @@ pub fn body<S: Source, Sch: Schedule>(src: &mut S, sch: &Sch, scope: &Scope) -> 
     Ok(())
 }
 
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::schedule::Production;
-    use crate::source::{exhaustive, random, random_cases};
-
-    /// Small scope: Δd, Δdmin, T take their 4 smallest and 4 largest legal values, n its
-    /// smallest and largest; every combination.
-    #[test]
-    fn depth_step_monotone_exhaustive() {
-        let r = exhaustive(4, 200_000, |s| body(s, &Production, &FULL)).assert_ok();
-        println!("{r}");
-    }
-
-    /// The whole small cube Δd, Δdmin, T ≤ 12, n ≤ 64 (all values, no edge sampling).
-    #[test]
-    fn depth_step_monotone_exhaustive_small_cube() {
-        let scope = Scope { max_len: 12, max_n: 64 };
-        let r = exhaustive(64, 2_000_000, |s| body(s, &Production, &scope)).assert_ok();
-        println!("{r}");
-    }
-
-    #[test]
-    fn depth_step_monotone_random() {
-        let r = random(0x5eed_0001, random_cases(1), |s| body(s, &Production, &FULL)).assert_ok();
-        println!("{r}");
+cycle_harness::property! {
+    pub const PROPERTY = depth_step_monotone in crate::PROPERTIES {
+        rules: ["G76.DEPTH.1", "G76.DEPTH.MIN", "G76.DEPTH.LAST", "G78.DEPTHMODE"],
+        states: "Every reachable pass n of the production schedule is the register's closed form (round(√n·Δd) before the switch pass, + Δdmin from it, n·Δd in constant mode, clamped at k − d), and each step is monotone.",
+        body: |src, scope| body(src, &crate::schedule::Production, &scope),
+        /// The Kani attempt (a TEST: out of memory; built as a harness only with `kani-attempts`).
+        kani: test(FULL) { unwind: 65, why: "out of memory (10–13 GB) in symbolic execution, 3 M steps" },
+        tests {
+            /// Small scope: Δd, Δdmin, T take their 4 smallest and 4 largest legal values, n its
+            /// smallest and largest; every combination.
+            fn depth_step_monotone_exhaustive = exhaustive(4, 200_000) on FULL;
+            /// The whole small cube Δd, Δdmin, T ≤ 12, n ≤ 64 (all values, no edge sampling).
+            fn depth_step_monotone_exhaustive_small_cube = exhaustive(64, 2_000_000) on Scope { max_len: 12, max_n: 64 };
+            fn depth_step_monotone_random = random(0x5eed_0001, 1) on FULL;
+        }
     }
 }

@@ -34,22 +34,24 @@
 //! - The tool ends where it started (G76.PATH, G92.PATH: every pass returns to A).
 //!
 //! **Not a Kani proof.** Kani 0.61.0 / CBMC 6.4.0 ran out of memory in symbolic execution (issue #25): the symbolic program text makes the lexer's loops (comment, digit runs, blanks) unroll to the bound. No entry below the lexer reaches the G92/G76/G78 state machines (`modal` and `emit` are private), so this stays a TEST; `g90_envelope` is the Kani envelope proof below the lexer for G90/G94. The body runs under `cargo test` (bounded-exhaustive and random
-//! drivers); the scope named `KANI` below is what a Kani run would take, kept for the drivers.
+//! drivers); its Kani harness (the scope named `KANI` below) is a proof harness only with the
+//! feature `kani-attempts`.
 //!
-//! **Former Kani bounds** ([`KANI`]): lengths ≤ 9 increments, leads ≤ 9 counts, `max_passes` ≤ 3,
+//! **Kani bounds of the attempt** ([`KANI`]): lengths ≤ 9 increments, leads ≤ 9 counts, `max_passes` ≤ 3,
 //! L ≤ 2, m ≤ 2; the program is at most [`KANI_PROGRAM`] = 110 bytes (checked by the body in
 //! every driver). Loops: the lexer's byte loops ≤ 111, our event loop ≤ 7·3 + 2 = 23, digit loops
 //! ≤ 20, the switch-pass search ≤ 33, the root's walk ≤ 4 (`isqrt` is loop-free), the
 //! configuration check 15.
 //! So `#[kani::unwind(112)]`.
 
-use crate::program::Program;
 use crate::source::{Outcome, Source};
 use crate::{check, cover};
 use cycle_impl::Expander;
 use cycle_impl::MAX_LENGTH;
-use cycle_impl::config::DEFAULTS;
 use cycle_vocab::{AlarmCode, Config, Event, Grid, Increment, MoveKind, Params, Units};
+use write::Written;
+
+mod write;
 
 /// The ranges a run draws from, and which optional parts of a program it may write.
 #[derive(Clone, Copy, Debug)]
@@ -138,8 +140,6 @@ fn optional<S: Source>(src: &mut S, allowed: bool, lo: i64, hi: i64) -> Option<i
 pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     let code = src.choose(3); // 0: G92, 1: G76, 2: G78
     let grid = GRIDS[src.choose(scope.grids.clamp(1, 4)) as usize];
-    let dec = grid.decimals();
-    let lpi = grid.lead_counts_per_increment();
     let start_x = src.bounded_i64(-scope.max_start, scope.max_start);
     let start_z = src.bounded_i64(-scope.max_start, scope.max_start);
     let max_passes = src.bounded_u32(1, scope.max_passes);
@@ -161,104 +161,8 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     let w = if src.bool() { w_mag } else { -w_mag };
     let lead = src.bounded_i64(1, scope.max_lead.min(max_f(grid.units)));
 
-    let mut prog = Program::new();
-    // Envelope inputs.
-    let (mut k, mut e_len, mut d_allow, mut angle) = (0i64, 0i64, 0i64, 0i64);
-    let opt = scope.optional_words;
-    let mut starts = 1u32;
-    let pull_bound;
-    let u;
-    if code == 0 {
-        // G92: A.x = C.x + s·2·depth, C.x = D.x + 2R.
-        let depth = src.bounded_i64(1, len);
-        u = -2 * taper - 2 * s * depth;
-        let j = optional(src, opt, -len, len);
-        let kk = optional(src, opt, -len, len);
-        let l = if opt && src.bool() { Some(src.bounded_u32(1, scope.max_starts)) } else { None };
-        prog.text(b"G92");
-        prog.len_word(b'U', u, dec);
-        prog.len_word(b'W', w, dec);
-        if taper != 0 || (opt && src.bool()) {
-            prog.len_word(b'R', taper, dec);
-        }
-        prog.len_word(b'F', lead, grid.lead_decimals());
-        if let Some(j) = j {
-            prog.len_word(b'J', j, dec);
-        }
-        if let Some(kk) = kk {
-            prog.len_word(b'K', kk, dec);
-        }
-        if let Some(l) = l {
-            prog.int_word(b'L', i64::from(l));
-            starts = l;
-        }
-        prog.end_block();
-        let no19 = ceil_div(i64::from(DEFAULTS.no19_pullout) * lead, 10 * lpi) + 1;
-        pull_bound = j.unwrap_or(0).abs().max(kk.unwrap_or(0).abs()).max(no19);
-    } else {
-        let g = if code == 1 { 76 } else { 78 };
-        k = src.bounded_i64(1, len);
-        let clearance = src.bounded_i64(0, len);
-        u = -2 * taper - s * (2 * k + clearance);
-        let dd = src.bounded_i64(1, len);
-        // First block: its values, or the parameters' defaults.
-        let defaults = DEFAULTS;
-        let mut chamfer_tenths = i64::from(defaults.p5130_chamfer);
-        angle = i64::from(defaults.p5143_tool_angle);
-        d_allow = p5141_finish_allowance;
-        if scope.first_block && src.bool() {
-            let m = src.bounded_u32(1, scope.max_finish);
-            let middle = if code == 1 { src.bounded_u32(0, 99) } else { src.every_u32(0, 4) };
-            let a = src.bounded_u32(0, 99);
-            prog.int_word(b'G', g);
-            prog.six_digits(b'P', m, middle, a);
-            angle = i64::from(a);
-            if code == 1 {
-                chamfer_tenths = i64::from(middle);
-            }
-            if let Some(q) = optional(src, true, 0, len) {
-                prog.len_word(b'Q', q, dec);
-            }
-            if let Some(r) = optional(src, true, 0, len) {
-                prog.len_word(b'R', r, dec);
-                d_allow = r;
-            }
-            if src.bool() {
-                let mode = src.every_u32(0, if code == 1 { 2 } else { 1 });
-                prog.int_word(b'D', i64::from(mode));
-            }
-            if src.bool() {
-                starts = src.bounded_u32(1, scope.max_starts);
-                prog.int_word(b'L', i64::from(starts));
-            }
-            if let Some(e) = optional(src, true, 0, len) {
-                prog.len_word(b'E', e, dec);
-                e_len = e;
-            }
-            prog.end_block();
-        }
-        let j = optional(src, opt, 0, len);
-        let kk = optional(src, opt, 0, len);
-        prog.int_word(b'G', g);
-        prog.len_word(b'U', u, dec);
-        prog.len_word(b'W', w, dec);
-        if taper != 0 || (opt && src.bool()) {
-            prog.len_word(b'R', taper, dec);
-        }
-        prog.len_word(b'P', k, dec);
-        prog.len_word(b'Q', dd, dec);
-        prog.len_word(b'F', lead, grid.lead_decimals());
-        if let Some(j) = j {
-            prog.len_word(b'J', j, dec);
-        }
-        if let Some(kk) = kk {
-            prog.len_word(b'K', kk, dec);
-        }
-        prog.end_block();
-        // 5131 = 45° (default): an omitted J is round(K·tan 45°) = K.
-        let chamfer = ceil_div(chamfer_tenths.max(i64::from(defaults.p5130_chamfer)) * lead, 10 * lpi) + 1;
-        pull_bound = j.unwrap_or(0).max(kk.unwrap_or(0)).max(chamfer);
-    }
+    let Written { prog, u, k, e_len, d_allow, angle, starts, pull_bound } =
+        write::write(src, scope, code, grid, s, taper, w, lead, p5141_finish_allowance);
     src.note_program(prog.bytes());
     check!(src, !prog.overflowed() && prog.len() <= scope.max_program, "the program fits the scope's buffer bound");
 
@@ -343,102 +247,33 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     Ok(())
 }
 
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::source::{exhaustive, random, random_cases};
-
-    /// Geometry: every side, taper, height, clearance, W, Δd, Δdmin (5140), d (5141) ≤ 2
-    /// increments, leads 1…2, max_passes 1…4, every grid; no optional words.
-    #[test]
-    fn expander_never_panics_exhaustive_geometry() {
-        let scope = Scope {
-            max_start: 0,
-            max_len: 2,
-            max_lead: 2,
-            max_passes: 4,
-            max_starts: 1,
-            max_finish: 1,
-            grids: 4,
-            first_block: false,
-            optional_words: false,
-            max_program: KANI_PROGRAM,
-        };
-        let r = exhaustive(3, 3_000_000, |s| body(s, &scope)).assert_ok();
-        println!("{r}");
-    }
-
-    /// Pull-out and start words: J, K (absent, smallest, largest, and negative for G92), L, R0,
-    /// with each length at its smallest and largest value in 1…2.
-    #[test]
-    fn expander_never_panics_exhaustive_words() {
-        let scope = Scope {
-            max_start: 0,
-            max_len: 2,
-            max_lead: 2,
-            max_passes: 4,
-            max_starts: 2,
-            max_finish: 1,
-            grids: 1,
-            first_block: false,
-            optional_words: true,
-            max_program: KANI_PROGRAM,
-        };
-        let r = exhaustive(1, 3_000_000, |s| body(s, &scope)).assert_ok();
-        println!("{r}");
-    }
-
-    /// First blocks: m, r or mode, a, Δdmin, d, D, L, E in every combination of presence and
-    /// extreme value, on a pinned thread.
-    #[test]
-    fn expander_never_panics_exhaustive_first_block() {
-        let scope = Scope {
-            max_start: 0,
-            max_len: 1,
-            max_lead: 1,
-            max_passes: 3,
-            max_starts: 2,
-            max_finish: 2,
-            grids: 1,
-            first_block: true,
-            optional_words: false,
-            max_program: KANI_PROGRAM,
-        };
-        let r = exhaustive(1, 3_000_000, |s| body(s, &scope)).assert_ok();
-        println!("{r}");
-    }
-
-    /// The Kani scope itself, sampled: its programs fit the 110 bytes its unwind bound assumes
-    /// (the body checks the length), and every property holds.
-    #[test]
-    fn expander_never_panics_random_kani_scope() {
-        let r = random(0x5eed_0006, random_cases(4), |s| body(s, &KANI)).assert_ok();
-        println!("{r}");
-    }
-
-    /// The longest program of the Kani scope, written out (inch ISC, 5 decimals, every optional
-    /// word, negative U, W, R): 110 bytes.
-    #[test]
-    fn longest_kani_program_is_110_bytes() {
-        let mut p = Program::new();
-        p.text(b"G78P029999Q0.00009R0.00009D1L2E0.00009\n");
-        p.text(b"G78U-0.00036W-0.00009R-0.00009P0.00009Q0.00009F0.00009J0.00009K0.00009\n");
-        assert_eq!(p.len(), KANI_PROGRAM);
-    }
-
-    /// Full legal lengths and leads, up to 200 passes, 5 starts, 3 finishing passes.
-    #[test]
-    fn expander_never_panics_random() {
-        let r = random(0x5eed_0004, random_cases(4), |s| body(s, &WIDE)).assert_ok();
-        println!("{r}");
-    }
-
-    /// Small lengths (1…60 increments) where cycles are legal and have many passes.
-    #[test]
-    fn expander_never_panics_random_small() {
-        let scope = Scope { max_start: 2000, max_len: 60, max_lead: 3000, max_passes: 60, max_program: 160, ..WIDE };
-        let r = random(0x5eed_0005, random_cases(4), |s| body(s, &scope)).assert_ok();
-        println!("{r}");
+cycle_harness::property! {
+    pub const PROPERTY = expander_never_panics in crate::PROPERTIES {
+        rules: ["COM.POINTS", "COM.RANGES", "PRJ.MAXPASS", "G76.PATH", "G92.PATH", "PRJ.TRACE"],
+        states: "Small G92/G76/G78 programs: no panic, bounded events, TOO MANY PASSES before any motion, every move inside the envelope computed from the words, back at A.",
+        body: |src, scope| body(src, &scope),
+        /// The Kani attempt (a TEST: out of memory; a harness only with `kani-attempts`).
+        kani: test(KANI) { unwind: 112, why: "out of memory in symbolic execution (the lexer's loops over symbolic text)" },
+        tests {
+            /// Geometry: every side, taper, height, clearance, W, Δd, Δdmin (5140), d (5141) ≤ 2
+            /// increments, leads 1…2, max_passes 1…4, every grid; no optional words.
+            fn expander_never_panics_exhaustive_geometry = exhaustive(3, 3_000_000) on Scope { max_start: 0, max_len: 2, max_lead: 2, max_passes: 4, max_starts: 1, max_finish: 1, grids: 4, first_block: false, optional_words: false, max_program: KANI_PROGRAM };
+            /// Pull-out and start words: J, K (absent, smallest, largest, and negative for G92), L, R0,
+            /// with each length at its smallest and largest value in 1…2.
+            fn expander_never_panics_exhaustive_words = exhaustive(1, 3_000_000) on Scope { max_start: 0, max_len: 2, max_lead: 2, max_passes: 4, max_starts: 2, max_finish: 1, grids: 1, first_block: false, optional_words: true, max_program: KANI_PROGRAM };
+            /// First blocks: m, r or mode, a, Δdmin, d, D, L, E in every combination of presence and
+            /// extreme value, on a pinned thread.
+            fn expander_never_panics_exhaustive_first_block = exhaustive(1, 3_000_000) on Scope { max_start: 0, max_len: 1, max_lead: 1, max_passes: 3, max_starts: 2, max_finish: 2, grids: 1, first_block: true, optional_words: false, max_program: KANI_PROGRAM };
+            /// The Kani scope itself, sampled: its programs fit the 110 bytes its unwind bound assumes
+            /// (the body checks the length), and every property holds.
+            fn expander_never_panics_random_kani_scope = random(0x5eed_0006, 4) on KANI;
+            /// Full legal lengths and leads, up to 200 passes, 5 starts, 3 finishing passes.
+            fn expander_never_panics_random = random(0x5eed_0004, 4) on WIDE;
+            /// Small lengths (1…60 increments) where cycles are legal and have many passes.
+            fn expander_never_panics_random_small = random(0x5eed_0005, 4) on Scope { max_start: 2000, max_len: 60, max_lead: 3000, max_passes: 60, max_program: 160, ..WIDE };
+        }
     }
 }
+
+#[cfg(test)]
+mod tests;

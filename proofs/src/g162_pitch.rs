@@ -21,9 +21,10 @@
 //!   single pass); each thread cuts at X0 − 2s·depth to Ze; the tool ends at the start point.
 //!
 //! **Not a Kani proof.** Kani 0.61.0 / CBMC 6.4.0 ran out of memory in symbolic execution (issue #25): the symbolic program text unrolls the lexer's loops. The body runs under `cargo test` (bounded-exhaustive and random
-//! drivers); the scope named `KANI` below is what a Kani run would take, kept for the drivers.
+//! drivers); its Kani harness (the scope named `KANI` below) is a proof harness only with the
+//! feature `kani-attempts`.
 //!
-//! **Former Kani bounds** ([`KANI`]): lengths (thread gap, Z travel, P, Q) ≤ 9 increments, H ≤ 99
+//! **Kani bounds of the attempt** ([`KANI`]): lengths (thread gap, Z travel, P, Q) ≤ 9 increments, H ≤ 99
 //! counts; F, I, J, the grid, the side and the start point (within ±(N − 100)) symbolic over
 //! their full ranges. At most 13 passes (P/Q ≤ 9, plus four split passes), so ≤ 1 + 13·6 events:
 //! the event loop runs ≤ 80 times. The program is ≤ 110 bytes (checked): `#[kani::unwind(112)]`
@@ -235,32 +236,20 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     Ok(())
 }
 
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::source::{exhaustive, random, random_cases};
-
-    /// Every choice (grid, side, direction, split or not, J or not) with the edges of every
-    /// range: F and |I| at 1 and Fmax, J at 0.001° and 999 999.999°, lengths 1 and 3.
-    #[test]
-    fn g162_variable_pitch_exhaustive() {
-        let scope = Scope { max_start: 50, max_len: 3, max_travel: 3, max_lead: i64::MAX, max_program: 110 };
-        let r = exhaustive(1, 3_000_000, |s| body(s, &scope)).assert_ok();
-        println!("{r}");
-    }
-
-    #[test]
-    fn g162_variable_pitch_random_kani_scope() {
-        let r = random(0x5eed_0163, random_cases(8), |s| body(s, &KANI)).assert_ok();
-        println!("{r}");
-    }
-
-    /// Longer threads (up to 200 mm at ISB) so that moderate growth is accepted and refused.
-    #[test]
-    fn g162_variable_pitch_random_long() {
-        let scope = Scope { max_start: 1_000_000, max_len: 9, max_travel: 200_000, max_lead: 50_000, max_program: 110 };
-        let r = random(0x5eed_0164, random_cases(8), |s| body(s, &scope)).assert_ok();
-        println!("{r}");
+cycle_harness::property! {
+    pub const PROPERTY = g162_variable_pitch in crate::PROPERTIES {
+        rules: ["G162.I", "G162.J", "G162.F", "G162.PQ", "G162.SPLIT", "G162.PATH", "G162.H", "PRJ.TRACE"],
+        states: "A whole G162 expansion under nc201: GEOMETRY on I exactly when the end lead leaves the F range, else the register's variable lead (the shrinking pitch never reaches ≤ 0) and depths strictly increasing to exactly P.",
+        body: |src, scope| body(src, &scope),
+        /// The Kani attempt (a TEST: out of memory; a harness only with `kani-attempts`).
+        kani: test(KANI) { unwind: 112, why: "out of memory in symbolic execution (lexer loops)" },
+        tests {
+            /// Every choice (grid, side, direction, split or not, J or not) with the edges of every
+            /// range: F and |I| at 1 and Fmax, J at 0.001° and 999 999.999°, lengths 1 and 3.
+            fn g162_variable_pitch_exhaustive = exhaustive(1, 3_000_000) on Scope { max_start: 50, max_len: 3, max_travel: 3, max_lead: i64::MAX, max_program: 110 };
+            fn g162_variable_pitch_random_kani_scope = random(0x5eed_0163, 8) on KANI;
+            /// Longer threads (up to 200 mm at ISB) so that moderate growth is accepted and refused.
+            fn g162_variable_pitch_random_long = random(0x5eed_0164, 8) on Scope { max_start: 1_000_000, max_len: 9, max_travel: 200_000, max_lead: 50_000, max_program: 110 };
+        }
     }
 }

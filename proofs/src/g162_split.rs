@@ -18,13 +18,13 @@
 //!
 //! **Not a Kani proof (yet).** Over the full ranges Kani 0.61.0 / CBMC 6.4.0 reached no verdict
 //! in 1 289 s (issue #25). The bounded scope [`KANI`] below was prepared but not run to a verdict
-//! (and would lose P, Q ≥ 2^12), so it has no Kani wrapper.
+//! (and would lose P, Q ≥ 2^12), so it is a TEST (its Kani harness is built only with `kani-attempts`).
 //!
 //! **TEST `g162_split_tail`** ([`tail_body`], also driver-only): the same split over the full
 //! ranges, P formed as kQ + D so that no division is needed and `norm` stubbed by k and D
 //! ([`stubs`]) — everything of [`body`] that is linear in P, k and D. Kani reached no verdict
-//! on it either (CaDiCaL: 10 min; Kissat 4.0.1: 15 min; proofs/README.md); the wrapper that
-//! was run is in a comment after [`stubs`].
+//! on it either (CaDiCaL: 10 min; Kissat 4.0.1: 15 min; proofs/README.md); the harness that
+//! was run is its `property!` (a proof harness with `kani-attempts`).
 //!
 //! **Intended Kani bounds.** P, Q ≤ 2^12 − 1 ([`KANI`]; n and `limit` symbolic over their whole ranges);
 //! the drivers sample the full legal ranges ([`FULL`]). The only loops
@@ -47,7 +47,7 @@ pub struct Scope {
 /// What the drivers sample: the full legal ranges.
 pub const FULL: Scope = Scope { max_len: MAX_LENGTH };
 
-/// The bounded scope prepared for Kani (not run to a verdict, no wrapper): P, Q ≤ 2^12 − 1
+/// The bounded scope prepared for Kani (not run to a verdict; a proof harness only with `kani-attempts`): P, Q ≤ 2^12 − 1
 /// (1.7·10^7 pairs, every full pass n and every limit symbolic). The full ranges are left to the drivers: checking ⌊P/Q⌋ and n·Q of
 /// 30-bit words against the model bit-blasts to nonlinear equivalences (two dividers, two
 /// multipliers) that did not finish in 1 289 s (issue #25).
@@ -305,83 +305,41 @@ pub mod stubs {
     }
 }
 
-// No Kani wrapper: a TEST (see the module documentation). The wrapper that was run:
-//
-//     #[cfg(kani)]
-//     #[kani::proof]
-//     #[kani::unwind(6)]
-//     #[kani::solver(kissat)]   // also tried without: CaDiCaL
-//     #[kani::stub(cycle_impl::g162::norm, stubs::norm_spec)]
-//     fn g162_split_tail() {
-//         let _ = tail_body(&mut crate::source::KaniSource, &TAIL_KANI);
-//     }
-//
-// run with `cargo kani -p cycle-proofs --harness g162_split_tail -Z stubbing`.
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::source::{exhaustive, random, random_cases};
-
-    /// The register's examples through the model: P2.5 Q1 (ISB and ISC), P0.003 Q0.002,
-    /// P0.5 Q1.
-    #[test]
-    fn model_is_the_register() {
-        let depths = |p, q| {
-            let m = model::split(p, q);
-            let mut v: Vec<i64> = (1..=m.k).map(|n| n * q).collect();
-            v.extend(m.tail[..m.count].iter().map(|t| t.0));
-            v
-        };
-        assert_eq!(depths(2_500, 1_000), [1_000, 2_000, 2_250, 2_375, 2_438, 2_500]);
-        assert_eq!(depths(25_000, 10_000), [10_000, 20_000, 22_500, 23_750, 24_375, 25_000]);
-        assert_eq!(depths(3, 2), [2, 3]);
-        assert_eq!(depths(500, 1_000), [250, 375, 438, 500]);
-    }
-
-    /// Every P, Q ≤ 40 with every full pass n and the 20 smallest and largest `limit`s.
-    #[test]
-    fn g162_split_exact_exhaustive() {
-        let r = exhaustive(20, 2_000_000, |s| body(s, &Scope { max_len: 40 })).assert_ok();
-        println!("{r}");
-    }
-
-    /// The edges of the legal ranges.
-    #[test]
-    fn g162_split_exact_exhaustive_edges() {
-        let r = exhaustive(4, 1_000_000, |s| body(s, &FULL)).assert_ok();
-        println!("{r}");
-    }
-
-    #[test]
-    fn g162_split_exact_random() {
-        let r = random(0x5eed_0162, random_cases(2), |s| body(s, &FULL)).assert_ok();
-        println!("{r}");
-    }
-
-    /// `g162_split_tail`'s body: P, Q ≤ 40 (k ≤ 40 / Q); each draw its 6 smallest and largest values.
-    #[test]
-    fn g162_split_tail_exhaustive() {
-        let r = exhaustive(6, 2_000_000, |s| tail_body(s, &TailScope { max_len: 40, k_below_quotient: true })).assert_ok();
-        println!("{r}");
-    }
-
-    #[test]
-    fn g162_split_tail_exhaustive_edges() {
-        let r = exhaustive(4, 1_000_000, |s| tail_body(s, &TAIL_FULL)).assert_ok();
-        println!("{r}");
-    }
-
-    #[test]
-    fn g162_split_tail_random() {
-        let r = random(0x5eed_0163, random_cases(2), |s| tail_body(s, &TAIL_FULL)).assert_ok();
-        println!("{r}");
-    }
-
-    /// The Kani scope's draws (k ≤ N, most cases discarded) still reach every case.
-    #[test]
-    fn g162_split_tail_kani_scope_random() {
-        let r = random(0x5eed_0164, random_cases(8), |s| tail_body(s, &TAIL_KANI)).assert_ok();
-        println!("{r}");
+cycle_harness::property! {
+    pub const EXACT = g162_split_exact in crate::PROPERTIES {
+        rules: ["G162.PQ", "G162.SPLIT", "PRJ.MAXPASS"],
+        states: "The G162 depth split is the register's: k = ⌊P/Q⌋ full passes, the remainder split at D/2, 3D/4, 7D/8, D each rounded once half up (a target not deeper dropped), last exactly at P, the pass count.",
+        body: |src, scope| body(src, &scope),
+        /// The Kani attempt on the bounded scope (a TEST: not run to a verdict; a harness only with `kani-attempts`).
+        kani: test(KANI) { unwind: 6, why: "no verdict in 1 289 s over the full ranges; the bounded scope P, Q ≤ 2^12 − 1 (`KANI`) was not run to a verdict (and would lose P, Q ≥ 2^12), so it is a TEST (its Kani harness is built only with `kani-attempts`)" },
+        tests {
+            /// Every P, Q ≤ 40 with every full pass n and the 20 smallest and largest `limit`s.
+            fn g162_split_exact_exhaustive = exhaustive(20, 2_000_000) on Scope { max_len: 40 };
+            /// The edges of the legal ranges.
+            fn g162_split_exact_exhaustive_edges = exhaustive(4, 1_000_000) on FULL;
+            fn g162_split_exact_random = random(0x5eed_0162, 2) on FULL;
+        }
     }
 }
+
+cycle_harness::property! {
+    pub const TAIL = g162_split_tail in crate::PROPERTIES {
+        rules: ["G162.PQ", "G162.SPLIT", "PRJ.MAXPASS"],
+        states: "The G162 split over the full legal ranges with P formed as kQ + D (norm stubbed by k and D): pass 1, full pass n + 1 after n < k at (n + 1)·Q, the split targets kQ + e·D/8 rounded once half up (a target not deeper dropped), last exactly at P, the cuts summing to D, the pass count against the limit.",
+        body: |src, scope| tail_body(src, &scope),
+        /// The Kani harness that was run (Kissat; also tried with CaDiCaL): no verdict, so a TEST, a
+        /// proof harness only with `kani-attempts` (`-Z stubbing`).
+        kani: test(TAIL_KANI) { unwind: 6, solver: kissat, stubs: [cycle_impl::g162::norm => stubs::norm_spec], why: "no verdict: CaDiCaL, 10 min of CBMC (1.25 M variables, 5.13 M clauses; eleven queries answered, the twelfth open for 7 min; 1.97 GB), stopped by hand; Kissat 4.0.1, 900 s (eight queries answered at 30–70 s each, the ninth open for 9 min; CBMC 1.23 GB by `ps`)" },
+        tests {
+            /// `g162_split_tail`'s body: P, Q ≤ 40 (k ≤ 40 / Q); each draw its 6 smallest and largest values.
+            fn g162_split_tail_exhaustive = exhaustive(6, 2_000_000) on TailScope { max_len: 40, k_below_quotient: true };
+            fn g162_split_tail_exhaustive_edges = exhaustive(4, 1_000_000) on TAIL_FULL;
+            fn g162_split_tail_random = random(0x5eed_0163, 2) on TAIL_FULL;
+            /// The Kani scope's draws (k ≤ N, most cases discarded) still reach every case.
+            fn g162_split_tail_kani_scope_random = random(0x5eed_0164, 8) on TAIL_KANI;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -89,6 +89,9 @@ pub const KANI: Scope = Scope { max_pos: 1 << 60, max_len: MAX_LENGTH, max_passe
 /// The drivers' scope over the full ranges (events: 5·10^6 + 4 at most).
 pub const FULL: Scope = Scope { max_pos: 1 << 60, max_len: MAX_LENGTH, max_passes: 1_000_000, max_other: MAX_LENGTH, max_events: 5_000_004, trace: true };
 
+/// Positions within ±2^14, so that runs of many layers occur (a random driver's scope).
+pub const NEAR: Scope = Scope { max_pos: 1 << 14, max_len: 1 << 8, max_passes: 1_000_000, max_other: MAX_LENGTH, max_events: 5_000_004, trace: true };
+
 /// The harness body (see the module documentation).
 pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     let axis = if src.bool() { Axis::G72 } else { Axis::G71 };
@@ -328,67 +331,23 @@ pub mod stubs {
     }
 }
 
-// No Kani wrapper: a TEST (see the module documentation). The wrapper that was run:
-//
-//     #[cfg(kani)]
-//     #[kani::proof]
-//     #[kani::unwind(6)]
-//     #[kani::solver(kissat)]
-//     #[kani::stub(cycle_impl::contour::Contour::get, stubs::contour_get)]
-//     #[kani::stub(cycle_impl::contour::Contour::len, stubs::contour_len)]
-//     #[kani::stub(cycle_impl::contour::Contour::last, stubs::contour_last)]
-//     #[kani::stub(cycle_impl::rough::cut_on, stubs::cut_on_spec)]
-//     fn g71_layers() {
-//         let _ = body(&mut crate::source::KaniSource, &KANI);
-//     }
-//
-// run with `cargo kani -p cycle-proofs --harness g71_layers -Z stubbing`.
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::source::{exhaustive, random, random_cases};
-
-    /// Positions ±6, Δd and allowances ≤ 1 or 2, e 0…1, max_passes ≤ 12 (draws' 2 or 3 values
-    /// at each end): every combination.
-    #[test]
-    fn g71_layers_exhaustive_small() {
-        let scope = Scope { max_pos: 6, max_len: 1, max_passes: 12, max_other: 1, max_events: 64, trace: true };
-        let r = exhaustive(2, 4_000_000, |s| body(s, &scope)).assert_ok();
-        println!("{r}");
-        let scope = Scope { max_pos: 3, max_len: 2, max_passes: 12, max_other: 1, max_events: 64, trace: true };
-        let r = exhaustive(3, 4_000_000, |s| body(s, &scope)).assert_ok();
-        println!("{r}");
-        // The schedule alone (the Kani body) on the same scope.
-        let r = exhaustive(3, 4_000_000, |s| body(s, &Scope { trace: false, ..scope })).assert_ok();
-        println!("{r}");
-    }
-
-    /// The Kani scope's edges.
-    #[test]
-    fn g71_layers_exhaustive_kani_edges() {
-        let r = exhaustive(1, 4_000_000, |s| body(s, &KANI)).assert_ok();
-        println!("{r}");
-    }
-
-    /// Full ranges (most cases refused); positions within ±2^14 so that runs of many layers occur.
-    #[test]
-    fn g71_layers_random() {
-        let r = random(0x5eed_0071, random_cases(32), |s| body(s, &FULL)).assert_ok();
-        println!("{r}");
-        let near = Scope { max_pos: 1 << 14, max_len: 1 << 8, max_passes: 1_000_000, max_other: MAX_LENGTH, max_events: 5_000_004, trace: true };
-        let r = random(0x5eed_0072, random_cases(64), |s| body(s, &near)).assert_ok();
-        println!("{r}");
-        let r = random(0x5eed_0074, random_cases(64), |s| body(s, &Scope { trace: false, ..near })).assert_ok();
-        println!("{r}");
-    }
-
-    #[test]
-    fn g71_layers_random_kani_scope() {
-        let r = random(0x5eed_0073, random_cases(32), |s| body(s, &KANI)).assert_ok();
-        println!("{r}");
-        // The Kani scope's draws, with the run's events checked as well.
-        let r = random(0x5eed_0075, random_cases(32), |s| body(s, &Scope { trace: true, max_events: 24, ..KANI })).assert_ok();
-        println!("{r}");
+cycle_harness::property! {
+    pub const PROPERTY = g71_layers in crate::PROPERTIES {
+        rules: ["G71.LAYER", "G72.LAYER", "PRJ.MAXPASS"],
+        states: "The G71/G72 layer schedule below the contour geometry: TOO MANY PASSES before motion exactly when layer max_passes exists; layers strictly monotone toward the contour, each depth step exactly Δd, every layer before Q₀, the count the closed form ⌈D/step⌉ − 1 (0 when the cut is not positive); the run's headers, infeeds and cuts.",
+        body: |src, scope| body(src, &scope),
+        /// The Kani harness that was run (Kissat): no verdict, so a TEST, a proof harness only with
+        /// `kani-attempts` (`-Z stubbing`).
+        kani: test(KANI) { unwind: 6, solver: kissat, stubs: [cycle_impl::contour::Contour::get => stubs::contour_get, cycle_impl::contour::Contour::len => stubs::contour_len, cycle_impl::contour::Contour::last => stubs::contour_last, cycle_impl::rough::cut_on => stubs::cut_on_spec], why: "no verdict with the schedule-only scope (`KANI`: `max_passes` ≤ 5, `count` and `layer_at` without the run, four stubs, unwind 6), Kissat 4.0.1: 900 s (nine queries answered at 60–100 s each, the tenth open for 3 min; CBMC 2.6 GB, Kissat up to 2.3 GB by `ps`); before that, with the run's events (unwind 18) and without the contour stubs, CBMC's symbolic execution alone passed 7.6 GB in 4.6 min (stopped), and Kissat aborted (exit 134) next to an 8 GB CBMC when the 1 000-element buffer was built" },
+        tests {
+            /// Positions ±6, Δd and allowances ≤ 1 or 2, e 0…1, max_passes ≤ 12 (draws' 2 or 3 values
+            /// at each end): every combination.
+            fn g71_layers_exhaustive_small = exhaustive(2, 4_000_000) on Scope { max_pos: 6, max_len: 1, max_passes: 12, max_other: 1, max_events: 64, trace: true }, exhaustive(3, 4_000_000) on Scope { max_pos: 3, max_len: 2, max_passes: 12, max_other: 1, max_events: 64, trace: true }, exhaustive(3, 4_000_000) on Scope { max_pos: 3, max_len: 2, max_passes: 12, max_other: 1, max_events: 64, trace: false };
+            /// The Kani scope's edges.
+            fn g71_layers_exhaustive_kani_edges = exhaustive(1, 4_000_000) on KANI;
+            /// Full ranges (most cases refused); positions within ±2^14 so that runs of many layers occur.
+            fn g71_layers_random = random(0x5eed_0071, 32) on FULL, random(0x5eed_0072, 64) on NEAR, random(0x5eed_0074, 64) on Scope { trace: false, ..NEAR };
+            fn g71_layers_random_kani_scope = random(0x5eed_0073, 32) on KANI, random(0x5eed_0075, 32) on Scope { trace: true, max_events: 24, ..KANI };
+        }
     }
 }

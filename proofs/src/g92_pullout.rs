@@ -25,9 +25,10 @@
 //! the last check), before any motion. The pass header and the return to A are checked too.
 //!
 //! **Not a Kani proof.** Kani 0.61.0 / CBMC 6.4.0 ran out of memory in symbolic execution (issue #25): the symbolic program text unrolls the lexer's loops. Its parts below the lexer (the J/K table, the pull-out geometry, the No.19 amount) are the Kani harness `g92_pullout_geometry`. The body runs under `cargo test` (bounded-exhaustive and random
-//! drivers); the scope named `KANI` below is what a Kani run would take, kept for the drivers.
+//! drivers); its Kani harness (the scope named `KANI` below) is a proof harness only with the
+//! feature `kani-attempts`.
 //!
-//! **Former Kani bounds** ([`KANI`]): lengths ≤ 9 increments, lead ≤ 99 counts; No.19, grid, start
+//! **Kani bounds of the attempt** ([`KANI`]): lengths ≤ 9 increments, lead ≤ 99 counts; No.19, grid, start
 //! point and the J/K cases fully symbolic. The program is ≤ 57 bytes; the event loop ≤ 8.
 //! `#[kani::unwind(60)]` covers the lexer's byte loops (≤ 58) and everything else (digit loops
 //! ≤ 20, the configuration check 15; no square roots on this path).
@@ -235,48 +236,24 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     Ok(())
 }
 
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::source::{exhaustive, random, random_cases};
-
-    #[test]
-    fn table_is_the_register() {
-        let c = 7;
-        assert_eq!(table(None, None, c), Some((7, 7)));
-        assert_eq!(table(None, Some(0), c), Some((7, 7)));
-        assert_eq!(table(None, Some(-3), c), Some((7, 3)));
-        assert_eq!(table(Some(0), None, c), None);
-        assert_eq!(table(Some(0), Some(5), c), None);
-        assert_eq!(table(Some(-4), None, c), Some((4, 4)));
-        assert_eq!(table(Some(4), Some(0), c), Some((4, 4)));
-        assert_eq!(table(Some(4), Some(-2), c), Some((4, 2)));
-        assert_eq!(table(None, None, 0), None);
-        assert_eq!(table(None, Some(3), 0), None);
-    }
-
-    /// Every J/K case, every grid, every long-axis/side/sign combination; lengths ≤ 3, No.19 and
-    /// the lead at their extremes (0, 1, 2, 253…255; 1…3).
-    #[test]
-    fn g92_pullout_total_exhaustive() {
-        let scope = Scope { max_start: 0, max_len: 3, max_lead: 3, max_program: 57 };
-        let r = exhaustive(3, 3_000_000, |s| body(s, &scope)).assert_ok();
-        println!("{r}");
-    }
-
-    /// The Kani scope, sampled.
-    #[test]
-    fn g92_pullout_total_random_kani_scope() {
-        let r = random(0x5eed_0007, random_cases(4), |s| body(s, &KANI)).assert_ok();
-        println!("{r}");
-    }
-
-    /// Legal J, K (≤ 99 999 999) and lengths, leads to 9999 mm.
-    #[test]
-    fn g92_pullout_total_random() {
-        let scope = Scope { max_start: MAX_LENGTH, max_len: 99_999_999, max_lead: 99_990_000, max_program: 128 };
-        let r = random(0x5eed_0008, random_cases(4), |s| body(s, &scope)).assert_ok();
-        println!("{r}");
+cycle_harness::property! {
+    pub const PROPERTY = g92_pullout_total in crate::PROPERTIES {
+        rules: ["G92.JK.1", "G92.JK.2", "G92.JK.3", "G92.JK.4", "G92.JK.5", "G92.JK.6", "G92.JK.7", "G92.PULLOUT", "G92.TAPER", "COM.LONGAXIS"],
+        states: "A whole G92 expansion: the thread moves are C → D or C → pull-out start → pull-out end with the register's J/K table and geometry; K ≥ travel and an illegal taper refused before any motion.",
+        body: |src, scope| body(src, &scope),
+        /// The Kani attempt (a TEST: out of memory; a harness only with `kani-attempts`).
+        kani: test(KANI) { unwind: 60, why: "out of memory in symbolic execution (lexer loops)" },
+        tests {
+            /// Every J/K case, every grid, every long-axis/side/sign combination; lengths ≤ 3, No.19 and
+            /// the lead at their extremes (0, 1, 2, 253…255; 1…3).
+            fn g92_pullout_total_exhaustive = exhaustive(3, 3_000_000) on Scope { max_start: 0, max_len: 3, max_lead: 3, max_program: 57 };
+            /// The Kani scope, sampled.
+            fn g92_pullout_total_random_kani_scope = random(0x5eed_0007, 4) on KANI;
+            /// Legal J, K (≤ 99 999 999) and lengths, leads to 9999 mm.
+            fn g92_pullout_total_random = random(0x5eed_0008, 4) on Scope { max_start: MAX_LENGTH, max_len: 99_999_999, max_lead: 99_990_000, max_program: 128 };
+        }
     }
 }
+
+#[cfg(test)]
+mod tests;

@@ -99,28 +99,17 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     Ok(())
 }
 
-/// Kani: the retract over the ranges of [`KANI`]; no loop.
-#[cfg(kani)]
-#[kani::proof]
-fn hold_retract() {
-    let _ = body(&mut crate::source::KaniSource, &KANI);
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::source::{exhaustive, random, random_cases};
-
-    /// Coordinates in ±1: every combination of points, pull-outs, axes and held moves.
-    #[test]
-    fn hold_retract_exhaustive_small() {
-        let r = exhaustive(3, 3_000_000, |s| body(s, &Scope { max_pos: 1 })).assert_ok();
-        println!("{r}");
-    }
-
-    #[test]
-    fn hold_retract_random() {
-        let r = random(0x5eed_4010, random_cases(2), |s| body(s, &KANI)).assert_ok();
-        println!("{r}");
+cycle_harness::property! {
+    pub const PROPERTY = hold_retract in crate::PROPERTIES {
+        rules: ["G92.HOLD", "G76.HOLD"],
+        states: "The feed-hold retract of a thread cut (No.0018 bit 6 = 0) over ±2^40, from any point of the held move: a move in the pull-out manner exactly when the cut has a pull-out, by the programmed pull-out's displacement (or on to its end from the pull-out), the way the pull-out goes on the short axis, never past the thread's end on the long axis; then a rapid on the short axis only to A's coordinate, then A.",
+        body: |src, scope| body(src, &scope),
+        /// Kani: the retract over the ranges of [`KANI`]; no loop.
+        kani: proof(KANI) { measured: "SUCCESSFUL (129 checks; 5/5 covers), 9.7 s, 0.28 GB" },
+        tests {
+            /// Coordinates in ±1: every combination of points, pull-outs, axes and held moves.
+            fn hold_retract_exhaustive_small = exhaustive(3, 3_000_000) on Scope { max_pos: 1 };
+            fn hold_retract_random = random(0x5eed_4010, 2) on KANI;
+        }
     }
 }

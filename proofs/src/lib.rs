@@ -1,12 +1,13 @@
 //! Proof harnesses for the production expander (`cycle-impl`).
 //!
-//! Each harness is one generic body over a [`source::Source`], used three ways: a Kani proof
-//! (`#[kani::proof]`, symbolic values, run by vendors with `cargo kani`), a bounded-exhaustive
-//! test and a random test (both under `cargo test`, so CI executes every body). See
-//! `proofs/README.md` for the properties, bounds and commands.
+//! Each property is one generic body over a [`source::Source`], stated once with
+//! [`cycle_harness::property!`]: its bounded-exhaustive and random tests (under `cargo test`, so
+//! CI executes every body), its Kani harness (`cfg(kani)`; a proof where Kani reached a measured
+//! verdict) and its entry in [`PROPERTIES`]. See `proofs/README.md` for the properties, bounds
+//! and commands.
 #![forbid(unsafe_code)]
 
-pub use cycle_harness::{check, cover};
+pub use cycle_harness::{check, cover, CheckedBy, Property};
 
 pub mod program;
 pub mod source;
@@ -37,3 +38,29 @@ pub mod schedule_spec;
 
 pub mod invariants;
 pub mod trace_depths;
+
+/// Every property of this crate, in the order the certify page lists them. Each module's
+/// `property!` states its entry; this list is the only place they are gathered (each property's
+/// tests fail when it is missing here).
+pub const PROPERTIES: &[Property] = &[
+    depth_step_clamp::PROPERTY,
+    g90_envelope::PROPERTY,
+    g92_pullout_geometry::PROPERTY,
+    hold_retract::PROPERTY,
+    schedule_step::PROPERTY,
+    schedule_count::PROPERTY,
+    schedule_new_shape::PROPERTY,
+    depth_step::PROPERTY,
+    g162_split::TAIL,
+    peck_counts::PROPERTY,
+    g71_layers::PROPERTY,
+    depth_step_monotone::PROPERTY,
+    depth_bounds::PROPERTY,
+    #[cfg(not(kani))]
+    schedule_spec::PROPERTY,
+    fixed_point::PROPERTY,
+    expander_envelope::PROPERTY,
+    g92_pullout::PROPERTY,
+    g162_split::EXACT,
+    g162_pitch::PROPERTY,
+];

@@ -142,40 +142,21 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     Ok(())
 }
 
-// No Kani wrapper: a TEST. Kani 0.61.0 / CBMC 6.4.0 (CaDiCaL) was still in symbolic execution
-// after 720 s (timeout, no verdict) with the wrapper that was run:
-//
-//     #[cfg(kani)]
-//     #[kani::proof]
-//     #[kani::unwind(24)]
-//     fn peck_counts() {
-//         let _ = body(&mut crate::source::KaniSource, &KANI);
-//     }
-//
-// Unwind 24: the event loop runs at most 2·(2·3 + 4) + 2 = 22 times; `next_event` skips at most
-// six phases per event.
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::source::{exhaustive, random, random_cases};
-
-    /// Positions in ±2 and lengths in 0…2: every combination of both codes (600 000 cases) —
-    /// every refusal, ties of the last peck and the last column, e and relief of every size
-    /// against the peck, `max_passes` at its edges.
-    #[test]
-    fn peck_counts_exhaustive_small() {
-        let scope = Scope { max_pos: 2, max_pecks: 100, max_columns: 100 };
-        let r = exhaustive(3, 1_000_000, |s| body(s, &scope)).assert_ok();
-        println!("{r}");
-    }
-
-    #[test]
-    fn peck_counts_random() {
-        let r = random(0x5eed_0074, random_cases(2), |s| body(s, &KANI)).assert_ok();
-        println!("{r}");
-        let wide = Scope { max_pos: 2_000, max_pecks: 400, max_columns: 400 };
-        let r = random(0x5eed_0075, random_cases(2), |s| body(s, &wide)).assert_ok();
-        println!("{r}");
+cycle_harness::property! {
+    pub const PROPERTY = peck_counts in crate::PROPERTIES {
+        rules: ["G74.FORMAT", "G74.PECK", "G74.E", "G74.COLUMN", "G75.FORMAT", "G75.PECK", "G75.COLUMN", "PRJ.MAXPASS"],
+        states: "One G74/G75 cycle below the lexer: refused exactly in the register's order (no travel on the peck axis, no peck, a step travel without a step, then columns × pecks > max_passes) before any event; else ⌈travel/step⌉ + 1 columns with one header each, ⌈depth/peck⌉ pecks per column, each one peck further toward E, the last exactly at E, none past it; back at A.",
+        body: |src, scope| body(src, &scope),
+        /// The Kani harness that was run: still in symbolic execution after 720 s, so a TEST, a proof
+        /// harness only with `kani-attempts`. Unwind 24: the event loop runs at most 2·(2·3 + 4) + 2 = 22
+        /// times; `next_event` skips at most six phases per event.
+        kani: test(KANI) { unwind: 24, why: "no verdict: Kani 0.61.0 / CBMC 6.4.0 (CaDiCaL), scope `KANI` (≤ 3 pecks × 2 columns, positions and lengths ±2^40), unwind 24 — still in symbolic execution at the 720 s timeout" },
+        tests {
+            /// Positions in ±2 and lengths in 0…2: every combination of both codes (600 000 cases) —
+            /// every refusal, ties of the last peck and the last column, e and relief of every size
+            /// against the peck, `max_passes` at its edges.
+            fn peck_counts_exhaustive_small = exhaustive(3, 1_000_000) on Scope { max_pos: 2, max_pecks: 100, max_columns: 100 };
+            fn peck_counts_random = random(0x5eed_0074, 2) on KANI, random(0x5eed_0075, 2) on Scope { max_pos: 2_000, max_pecks: 400, max_columns: 400 };
+        }
     }
 }

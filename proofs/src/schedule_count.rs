@@ -162,19 +162,6 @@ fn min_depth<S: Source>(src: &mut S, p: &Parts, c: &Count, n: u32) -> Result<u12
     }
 }
 
-/// Kani: the count against the step over the legal words, every pass number and limit.
-/// Unwind 10: the only loops are over the eight and four assumptions.
-#[cfg(kani)]
-#[kani::proof]
-#[kani::unwind(10)]
-#[kani::stub(cycle_impl::schedule::root_depth, crate::schedule_parts::stubs::root_depth_spec)]
-#[kani::stub(cycle_impl::schedule::constant_depth, crate::schedule_parts::stubs::constant_depth_spec)]
-#[kani::stub(cycle_impl::schedule::switch_depth, stubs::switch_depth_spec)]
-#[kani::stub(cycle_impl::schedule::min_cuts, stubs::min_cuts_spec)]
-fn schedule_count() {
-    let _ = body(&mut crate::source::KaniSource, &FULL);
-}
-
 /// The Kani stubs of `cycle_impl::schedule::{switch_depth, min_cuts}`: lookups of b and Q
 /// (TRUSTED specification: [`spec`]; checked by the drivers).
 #[cfg(kani)]
@@ -208,31 +195,21 @@ pub mod stubs {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::source::{exhaustive, random, random_cases};
-
-    /// Δd, Δdmin, T ≤ 6 whole, pass numbers ≤ 40 and limits their 3 smallest and largest.
-    #[test]
-    fn schedule_count_exhaustive_small() {
-        let r = exhaustive(3, 2_000_000, |s| body(s, &Scope { max_len: 6, max_n: 40 })).assert_ok();
-        println!("{r}");
-    }
-
-    /// The edges of the legal ranges, pass numbers and limits.
-    #[test]
-    fn schedule_count_exhaustive_edges() {
-        let r = exhaustive(2, 2_000_000, |s| body(s, &FULL)).assert_ok();
-        println!("{r}");
-    }
-
-    /// The full ranges; and pass numbers ≤ 300, where the exact passes are not last.
-    #[test]
-    fn schedule_count_random() {
-        let r = random(0x5eed_0033, random_cases(4), |s| body(s, &FULL)).assert_ok();
-        println!("{r}");
-        let r = random(0x5eed_0034, random_cases(4), |s| body(s, &Scope { max_len: MAX_LENGTH as u64, max_n: 300 })).assert_ok();
-        println!("{r}");
+cycle_harness::property! {
+    pub const PROPERTY = schedule_count in crate::PROPERTIES {
+        rules: ["G76.DEPTH.LAST", "G76.DEPTH.MIN", "G78.DEPTHMODE", "PRJ.MAXPASS"],
+        states: "The closed-form pass count agrees with stepping on a symbolic schedule (the count's root and quotient stubbed by b and Q whose assumptions are z3 lemmas 05, 08, 11, checked by the drivers): the pass after an exact pass is last exactly when it is numbered by the count, earlier passes are numbered below it, and a limit gives the count or none.",
+        body: |src, scope| body(src, &scope),
+        /// Kani: the count against the step over the legal words, every pass number and limit.
+        /// Unwind 10: the only loops are over the eight and four assumptions.
+        kani: proof(FULL) { unwind: 10, stubs: [cycle_impl::schedule::root_depth => crate::schedule_parts::stubs::root_depth_spec, cycle_impl::schedule::constant_depth => crate::schedule_parts::stubs::constant_depth_spec, cycle_impl::schedule::switch_depth => stubs::switch_depth_spec, cycle_impl::schedule::min_cuts => stubs::min_cuts_spec], measured: "SUCCESSFUL (878 checks, 1 unreachable; 4/4 covers), 9.0 s, 0.46 GB" },
+        tests {
+            /// Δd, Δdmin, T ≤ 6 whole, pass numbers ≤ 40 and limits their 3 smallest and largest.
+            fn schedule_count_exhaustive_small = exhaustive(3, 2_000_000) on Scope { max_len: 6, max_n: 40 };
+            /// The edges of the legal ranges, pass numbers and limits.
+            fn schedule_count_exhaustive_edges = exhaustive(2, 2_000_000) on FULL;
+            /// The full ranges; and pass numbers ≤ 300, where the exact passes are not last.
+            fn schedule_count_random = random(0x5eed_0033, 4) on FULL, random(0x5eed_0034, 4) on Scope { max_len: MAX_LENGTH as u64, max_n: 300 };
+        }
     }
 }

@@ -35,20 +35,7 @@ pub fn body<S: Source>(src: &mut S, max_len: i64) -> Outcome {
     Ok(())
 }
 
-/// Kani: the legal words, `switch_pass` stubbed (NEVER without a minimum — its first line —,
-/// else any s ≥ 1: lemma 07's s is ⌊a²/c²⌋ + 2 ≥ 2 or 1, the search's at least 1), the reach
-/// quotient T(T − 1)/Δd² + 1 real. Kissat: with CaDiCaL the fifth query was still open after
-/// 600 s (proofs/README.md); Kissat decides it in about 590 s. No loop: unwind 3 bounds nothing.
-#[cfg(kani)]
-#[kani::proof]
-#[kani::unwind(3)]
-#[kani::solver(kissat)]
-#[kani::stub(cycle_impl::schedule::switch_pass, stubs::switch_pass_spec)]
-fn schedule_new_shape() {
-    let _ = body(&mut crate::source::KaniSource, FULL);
-}
-
-/// The Kani stub (TRUSTED specification, see `schedule_new_shape`'s wrapper).
+/// The Kani stub (TRUSTED specification, see the Kani harness `schedule_new_shape`).
 #[cfg(kani)]
 pub mod stubs {
     /// `switch_pass(Δd, Δdmin)`: NEVER without a minimum (its first line), else s ≥ 1 (lemma 07).
@@ -62,22 +49,21 @@ pub mod stubs {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::source::{exhaustive, random, random_cases};
-
-    /// Δd, Δdmin, T their 12 smallest and largest legal values, both modes.
-    #[test]
-    fn schedule_new_shape_exhaustive() {
-        let r = exhaustive(12, 2_000_000, |s| body(s, FULL)).assert_ok();
-        println!("{r}");
-    }
-
-    /// The legal words at random.
-    #[test]
-    fn schedule_new_shape_random() {
-        let r = random(0x5eed_0035, random_cases(4), |s| body(s, FULL)).assert_ok();
-        println!("{r}");
+cycle_harness::property! {
+    pub const PROPERTY = schedule_new_shape in crate::PROPERTIES {
+        rules: ["G76.DEPTH.LAST", "G76.DEPTH.MIN", "G78.DEPTHMODE"],
+        states: "Schedule::new of legal words (its reach quotient real, switch_pass stubbed: NEVER without a minimum, else ≥ 1, lemma 07) has the shape from_parts accepts (reach in 1…2^33, switch ≥ 1, NEVER without a minimum or in constant mode) and from_parts rebuilds it exactly.",
+        body: |src, max_len| body(src, max_len),
+        /// Kani: the legal words, `switch_pass` stubbed (NEVER without a minimum — its first line —,
+        /// else any s ≥ 1: lemma 07's s is ⌊a²/c²⌋ + 2 ≥ 2 or 1, the search's at least 1), the reach
+        /// quotient T(T − 1)/Δd² + 1 real. Kissat: with CaDiCaL the fifth query was still open after
+        /// 600 s (proofs/README.md); Kissat decides it in about 590 s. No loop: unwind 3 bounds nothing.
+        kani: proof(FULL) { unwind: 3, solver: kissat, stubs: [cycle_impl::schedule::switch_pass => stubs::switch_pass_spec], measured: "SUCCESSFUL (270 checks; 2/2 covers), 588.2 s, 0.22 GB" },
+        tests {
+            /// Δd, Δdmin, T their 12 smallest and largest legal values, both modes.
+            fn schedule_new_shape_exhaustive = exhaustive(12, 2_000_000) on FULL;
+            /// The legal words at random.
+            fn schedule_new_shape_random = random(0x5eed_0035, 4) on FULL;
+        }
     }
 }

@@ -159,26 +159,18 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     Ok(())
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::source::{exhaustive, random, random_cases};
-
-    /// Every Δd, Δdmin, T ≤ 9, d ≤ 3, both modes, limits their 6 smallest and largest values
-    /// up to 60 (the schedules have up to (T/Δd)² = 81 passes).
-    #[test]
-    fn schedule_spec_exhaustive_small() {
-        let scope = Scope { max_len: 9, max_limit: 60 };
-        let r = exhaustive(6, 2_000_000, |s| body(s, &scope)).assert_ok();
-        println!("{r}");
-    }
-
-    /// Legal lengths at random, and the edges.
-    #[test]
-    fn schedule_spec_random() {
-        let r = random(0x5eed_5bec, random_cases(1) / 64, |s| body(s, &WIDE)).assert_ok();
-        println!("{r}");
-        let r = exhaustive(2, 200_000, |s| body(s, &WIDE)).assert_ok();
-        println!("{r}");
+cycle_harness::property! {
+    pub const PROPERTY = schedule_spec in crate::PROPERTIES {
+        rules: ["G76.DEPTH.1", "G76.DEPTH.MIN", "G76.DEPTH.LAST", "G78.DEPTHMODE", "PRJ.MAXPASS"],
+        states: "The same depth-schedule properties over the spec's (BigInt) schedule: closed form, monotone steps, cuts ≥ Δdmin, last exactly at k − d, the count.",
+        body: |src, scope| body(src, &scope),
+        kani: none { why: "the spec's schedule computes in `BigInt` (heap digit vectors, Newton roots): not a Kani target" },
+        tests {
+            /// Every Δd, Δdmin, T ≤ 9, d ≤ 3, both modes, limits their 6 smallest and largest values
+            /// up to 60 (the schedules have up to (T/Δd)² = 81 passes).
+            fn schedule_spec_exhaustive_small = exhaustive(6, 2_000_000) on Scope { max_len: 9, max_limit: 60 };
+            /// Legal lengths at random, and the edges.
+            fn schedule_spec_random = random(0x5eed_5bec, 64) on WIDE, exhaustive(2, 200_000) on WIDE;
+        }
     }
 }
