@@ -45,8 +45,17 @@ fn extreme() -> Case {
 
 /// Each registry family's bench case at each size (`g92/100`, `g76/9900`, …; G70's contour is
 /// capped at CNT.MAX, so `g70/9900` is 999 elements), then the extremes, then G71 per layer.
-/// `quick`: the registry sizes only.
+/// `quick`: the registry sizes only. `CYCLECHECK_BENCH_CASES` set: the cases whose name starts
+/// with one of its comma-separated prefixes (to profile one case: `g162/9900`).
 pub fn cases(quick: bool) -> Vec<Case> {
+    let mut v = all_cases(quick);
+    if let Ok(only) = std::env::var("CYCLECHECK_BENCH_CASES") {
+        v.retain(|c| only.split(',').any(|p| c.name.starts_with(p)));
+    }
+    v
+}
+
+fn all_cases(quick: bool) -> Vec<Case> {
     let mut v = Vec::new();
     for family in FAMILIES {
         for n in BENCH_SIZES {

@@ -20,7 +20,7 @@
 //! `cargo bench -p cycle-tests --bench expand -- no_such_bench` runs no criterion benchmark
 //! (the filter matches none) and prints only the tables; `CYCLECHECK_BENCH_QUICK=1` takes 3
 //! rounds of 0.5 ms instead of 15 of 2 ms and the registry cases only (for iterating, not for
-//! figures).
+//! figures); `CYCLECHECK_BENCH_CASES=g162/9900,g74` keeps the cases named so (for profiling).
 
 mod cases;
 mod latency;

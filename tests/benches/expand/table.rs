@@ -108,6 +108,9 @@ fn targets(rows: &[Row]) {
     for family in FAMILIES {
         let at = |size| rows.iter().find(|r| r.family == family.name && r.size == size);
         let (Some(small), Some(large)) = (at(100), at(9_900)) else {
+            if std::env::var_os("CYCLECHECK_BENCH_CASES").is_some() {
+                continue; // a filtered run: the family's cases were left out on purpose
+            }
             println!("| {} | missing | missing | NO CASE | | | | |", family.name);
             missed += 1;
             continue;
