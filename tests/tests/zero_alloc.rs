@@ -1,7 +1,10 @@
 //! The production expander allocates nothing (issue: performance; impl is `no_std` without an
 //! allocator, and this checks it at run time too): a counting global allocator counts the
-//! allocations made on this test's thread while whole programs are expanded.
+//! allocations made on this test's thread while whole programs are expanded. Every registry
+//! family has its own test (#32): its bench cases and cases of its generator.
 
+use cycle_kernel::gen::{self, KNOBS};
+use cycle_kernel::registry::{self, cycle_run_until, CycleRun, FAMILIES};
 use cycle_vocab::{Config, Dialect, Event, Grid, Increment, Move, Rule, Units};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
@@ -138,4 +141,70 @@ fn subprograms_and_spindle_speed_allocate_nothing() {
         assert_eq!(allocations, 0, "the production expander allocated on:\n{program}");
         assert_eq!(fill_counting(program.as_bytes(), metric), (events, alarmed, 0), "{program}");
     }
+}
+
+/// Generated cases per family.
+const DRAWN: u64 = 48;
+
+/// The knobs of drawn case `seed`: a fixed xorshift stream, the same cases every run.
+fn knobs(seed: u64) -> Vec<u32> {
+    let mut x = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+    (0..KNOBS)
+        .map(|_| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x >> 32) as u32
+        })
+        .collect()
+}
+
+/// The family `name` allocates nothing: its bench cases at 1 and 100 passes (each runs the
+/// family's cycle to its end without an alarm) and [`DRAWN`] cases of its generator under
+/// readings drawn with them (alarms included), through the iterator and through `fill`; at
+/// least a quarter of the drawn cases must select the family.
+fn family_allocates_nothing(name: &str) {
+    let family = registry::find(name).unwrap_or_else(|| panic!("no registry family {name}"));
+    let selects = |case: &gen::Case| cycle_run_until(&case.program, &case.config, None) == CycleRun::Family(family);
+    for n in [1, 100] {
+        let case = (family.bench)(n);
+        assert!(selects(&case), "{name}'s bench case does not run {name}:\n{}", case.text());
+        let (events, alarmed, allocations) = expand_counting(&case.program, case.config);
+        assert!(events > 0 && !alarmed, "{name}'s bench case at {n}: {events} events, alarm {alarmed}");
+        assert_eq!(allocations, 0, "the production expander allocated on {name}'s bench case:\n{}", case.text());
+        assert_eq!(fill_counting(&case.program, case.config), (events, false, 0), "fill on {name}'s bench case at {n}");
+    }
+    let mut selecting = 0;
+    for seed in 0..DRAWN {
+        let mut case = gen::build(family.build, &knobs(seed));
+        case.config.readings = cycle_kernel::readings::from_bits(seed as u8);
+        selecting += u64::from(selects(&case));
+        let (events, alarmed, allocations) = expand_counting(&case.program, case.config);
+        assert_eq!(allocations, 0, "the production expander allocated on {case:?}");
+        assert_eq!(fill_counting(&case.program, case.config), (events, alarmed, 0), "fill on {case:?}");
+    }
+    assert!(selecting * 4 >= DRAWN, "only {selecting} of {DRAWN} drawn {name} cases select {name}");
+}
+
+/// One test per registry family.
+macro_rules! families {
+    ($($name:ident),* $(,)?) => {
+        $(#[test]
+        fn $name() {
+            family_allocates_nothing(stringify!($name));
+        })*
+
+        /// The tests above name every registry family (a new family without its test fails).
+        #[test]
+        fn every_family_has_its_test() {
+            let tested = [$(stringify!($name)),*];
+            let registered: Vec<&str> = FAMILIES.iter().map(|f| f.name).collect();
+            assert_eq!(tested.as_slice(), registered.as_slice());
+        }
+    };
+}
+
+mod family {
+    use super::*;
+    families!(g92, g76, g78, f76, g162, g32, g90, g94, g71, g72, g70, g73, g74, g75, g83, g84);
 }
