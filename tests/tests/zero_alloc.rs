@@ -4,7 +4,7 @@
 //! family has its own test (#32): its bench cases and cases of its generator.
 
 use cycle_kernel::gen::{self, KNOBS};
-use cycle_kernel::registry::{self, cycle_run_until, CycleRun, FAMILIES};
+use cycle_kernel::registry::{self, CycleRun, FAMILIES};
 use cycle_vocab::{Config, Dialect, Event, Grid, Increment, Move, Rule, Units};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
@@ -165,7 +165,7 @@ fn knobs(seed: u64) -> Vec<u32> {
 /// least a quarter of the drawn cases must select the family.
 fn family_allocates_nothing(name: &str) {
     let family = registry::find(name).unwrap_or_else(|| panic!("no registry family {name}"));
-    let selects = |case: &gen::Case| cycle_run_until(&case.program, &case.config, None) == CycleRun::Family(family);
+    let selects = |case: &gen::Case| registry::cycle_run(&case.program, &case.config, None) == CycleRun::Family(family);
     for n in [1, 100] {
         let case = (family.bench)(n);
         assert!(selects(&case), "{name}'s bench case does not run {name}:\n{}", case.text());
