@@ -128,7 +128,7 @@ macro_rules! property {
             rules: &[$($rule),*],
             statement: $statement,
             checked_by: $crate::__property!(@checked $kind),
-            kani: concat!($($measured)? $($why)?),
+            kani: $crate::__property!(@text $kind $(measured $measured)? $(why $why)?),
             unwind: $crate::__property!(@some $($unwind)?),
             solver: $crate::__property!(@some $(stringify!($solver))?),
             stubs: &[$($(stringify!($from)),*)?],
@@ -164,6 +164,12 @@ macro_rules! __property {
     (@checked proof) => { $crate::CheckedBy::Kani };
     (@checked test) => { $crate::CheckedBy::Drivers };
     (@checked none) => { $crate::CheckedBy::Drivers };
+    (@text proof measured $text:literal) => { $text };
+    (@text test why $text:literal) => { $text };
+    (@text none why $text:literal) => { $text };
+    (@text $($other:tt)*) => {
+        compile_error!("property!: `kani: proof(..)` takes `measured: \"…\"`, `kani: test(..)` and `kani: none` take `why: \"…\"`")
+    };
     (@some) => { None };
     (@some $e:expr) => { Some($e) };
     (@kani proof, $name:ident, ($kscope:expr), |$src:ident, $scope:ident| $body:expr, [$($attr:tt)*] $(#[$kdoc:meta])*) => {
