@@ -328,7 +328,7 @@ fn root(v: u128, hint: u64) -> u64 {
 /// TEST AID, never for production, used only with the feature `planted-depth-bug` (off by
 /// default): a one-increment error in the G76.DEPTH.1 rounding — r + 1 instead of r when
 /// v = r² + r (the comparison `≥ r` where `> r` is right: √(r² + r) < r + ½) — so that the
-/// harness can be shown to find it (README, "Fuzzing"). With Δd = 1 increment this is pass 2
+/// harness can be shown to find it (docs/FUZZING.md). With Δd = 1 increment this is pass 2
 /// (√2 → 2 instead of 1).
 fn planted_root(v: u128) -> u64 {
     let r = crate::fixed::isqrt(v);

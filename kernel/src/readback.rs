@@ -1,4 +1,4 @@
-//! A reader of canonical expanded G-code (the format `cycle_vocab::text` prints and the README
+//! A reader of canonical expanded G-code (the format `cycle_vocab::text` prints and docs/TRACE.md
 //! documents): the header comment, then one motion per block, `G00 X Z`, `G01 X Z F`,
 //! `G32 X Z F [Q] [K [J]] [R] [L1]` or `G02`/`G03 X Z I K F` (I, K the absolute centre), and the
 //! non-motion events `G04 P` (a dwell) and `M03`/`M04` (the spindle); pass and alarm comments are

@@ -7,7 +7,7 @@
 //!   fuzz --write-seeds` and encoded from there into libFuzzer's `fuzz/corpus/<target>/`;
 //! - the regressions, `tests/fuzz_regressions/<target>/`, written decoded by `cyclecheck fuzz`.
 //!   `diff_spec_impl/planted-depth-bug-*` is the case the fuzzer found for the planted depth
-//!   rounding error (README, "Fuzzing"); it passes on this impl and fails with `--features
+//!   rounding error (docs/FUZZING.md); it passes on this impl and fails with `--features
 //!   cycle-impl/planted-depth-bug`.
 
 use cycle_kernel::fuzzing::committed::{regressions_dir, seeds_dir};

@@ -1,6 +1,6 @@
 //! The trace as an owned value, and its two printed forms: JSON and canonical expanded G-code.
 //!
-//! Canonical G-code (documented in the README, parsed by vendors):
+//! Canonical G-code (documented in docs/TRACE.md, parsed by vendors):
 //!
 //! ```text
 //! (CYCLECHECK TRACE MM GRID 0.001)

@@ -1,5 +1,5 @@
 //! `evidence.json`: the machine-readable record of a certification run (schema [`SCHEMA`],
-//! documented in the README): the run's identity (time, build, host, candidate executable and
+//! documented in docs/CERTIFY.md): the run's identity (time, build, host, candidate executable and
 //! its SHA-256), tool and protocol versions, fingerprints of the catalogue and the register
 //! compiled in, the candidate and its limits, parameters and seeds, counts per cycle run (each
 //! with what it counts), per rule and per configuration, the failures listed, the divergence
