@@ -20,7 +20,9 @@
 //! `cargo bench -p cycle-tests --bench expand -- no_such_bench` runs no criterion benchmark
 //! (the filter matches none) and prints only the tables; `CYCLECHECK_BENCH_QUICK=1` takes 3
 //! rounds of 0.5 ms instead of 15 of 2 ms and the registry cases only (for iterating, not for
-//! figures); `CYCLECHECK_BENCH_CASES=g162/9900,g74` keeps the cases named so (for profiling).
+//! figures); `CYCLECHECK_BENCH_CASES=g162/9900,g74` keeps the cases named so;
+//! `CYCLECHECK_BENCH_ROUNDS=n` takes n rounds; `CYCLECHECK_BENCH_PROFILE=5` only runs the
+//! production expander (`fill`) on each case kept, 5 s each, for `perf record`.
 
 mod cases;
 mod latency;
@@ -53,10 +55,27 @@ fn bench(c: &mut Criterion, cases: &[Case]) {
     }
 }
 
+/// The production expander alone on each case for `seconds` (a workload for a profiler).
+fn profile(cases: &[Case], seconds: f64) {
+    for case in cases {
+        let mut buffer = events(case);
+        let start = std::time::Instant::now();
+        let mut runs = 0u64;
+        while start.elapsed().as_secs_f64() < seconds {
+            impl_into(&mut buffer, black_box(case));
+            runs += 1;
+        }
+        println!("{}: {runs} expansions in {seconds} s", case.name);
+    }
+}
+
 fn main() {
     let mode = measure::Mode::from_env();
-    let quick = mode.rounds < 15;
+    let quick = mode.quick();
     let cases = cases::cases(quick);
+    if let Some(seconds) = std::env::var("CYCLECHECK_BENCH_PROFILE").ok().and_then(|s| s.parse().ok()) {
+        return profile(&cases, seconds);
+    }
     let mut c = Criterion::default().configure_from_args();
     bench(&mut c, &cases);
     c.final_summary();

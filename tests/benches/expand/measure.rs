@@ -18,13 +18,23 @@ pub struct Mode {
 }
 
 impl Mode {
-    /// 15 rounds of at least 2 ms each; `CYCLECHECK_BENCH_QUICK` set: 3 rounds of 0.5 ms.
+    /// 15 rounds of at least 2 ms each; `CYCLECHECK_BENCH_QUICK` set: 3 rounds of 0.5 ms;
+    /// `CYCLECHECK_BENCH_ROUNDS=n`: n rounds (more on a loaded machine).
     pub fn from_env() -> Mode {
-        if std::env::var_os("CYCLECHECK_BENCH_QUICK").is_some() {
+        let mut mode = if std::env::var_os("CYCLECHECK_BENCH_QUICK").is_some() {
             Mode { rounds: 3, min_ns: 5e5 }
         } else {
             Mode { rounds: 15, min_ns: 2e6 }
+        };
+        if let Some(n) = std::env::var("CYCLECHECK_BENCH_ROUNDS").ok().and_then(|n| n.parse().ok()) {
+            mode.rounds = n;
         }
+        mode
+    }
+
+    /// Whether the run is the quick one.
+    pub fn quick(self) -> bool {
+        self.min_ns < 2e6
     }
 }
 
