@@ -43,7 +43,7 @@ pub struct Family {
     /// Its catalogue rules: the IDs equal to one of these or starting with one and a dot.
     pub rule_prefixes: &'static [&'static str],
     /// Its bench case: a program of about `n` passes (or thread blocks), without an alarm
-    /// (`tests/benches/expand.rs` runs it at each of [`BENCH_SIZES`]).
+    /// (`tests/benches/expand/` runs it at each of [`BENCH_SIZES`]).
     pub bench: fn(usize) -> Case,
 }
 
