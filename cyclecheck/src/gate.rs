@@ -8,8 +8,8 @@
 //!    generator and garbage (`cycle_kernel::gen::any_case`), `cases` cases, spec vs impl by the conformance relation;
 //! 3. `fuzz replay`: the committed decoded seeds and regression cases (`fuzz/seeds/`,
 //!    `tests/fuzz_regressions/`) of the program fuzz targets through their bodies, each case's
-//!    expected verdict checked (`cycle_kernel::fuzzing::replay`); the `impl_invariants` cases are read
-//!    here and replayed by step 4 (`tests/tests/fuzz_replay.rs`);
+//!    expected verdict checked (`cycle_kernel::fuzzing::replay`), and those of `impl_invariants`
+//!    through the proof harnesses' bodies (`cycle_kernel::fuzzing::invariants`);
 //! 4. `cargo test`: the workspace's tests with `CI=true INSTA_UPDATE=no` (snapshots checked,
 //!    never written), a fixed `CYCLECHECK_SEED`, `CYCLECHECK_CASES` and
 //!    `CYCLECHECK_PROOF_CASES` — snapshots, properties, differential campaigns, the bounded
@@ -25,7 +25,7 @@
 use cycle_kernel::campaign::{self, Verdict};
 use crate::certify::shard::Shard;
 use cycle_kernel::engine::{ImplEngine, SpecEngine};
-use cycle_kernel::fuzzing::{committed, decoded, replay, Target};
+use cycle_kernel::fuzzing::{committed, decoded, invariants, replay, Target};
 use cycle_kernel::{corpus, gen};
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config as PtConfig, RngAlgorithm, TestRng, TestRunner};
@@ -157,9 +157,18 @@ pub fn replay_step(root: &Path, shard: Option<Shard>) -> Step {
         for t in Target::ALL {
             for dir in [committed::seeds_dir(root, t), committed::regressions_dir(root, t)] {
                 if t == Target::ImplInvariants {
-                    match decoded::load_harnesses(&dir) {
-                        Ok(cases) => harness_cases += cases.len(),
-                        Err(e) => failures.push(e),
+                    let cases = decoded::load_harnesses(&dir).unwrap_or_else(|e| {
+                        failures.push(e);
+                        Vec::new()
+                    });
+                    for (_, (name, case)) in cases.iter().enumerate().filter(|(i, _)| Shard::includes(shard, *i)) {
+                        harness_cases += 1;
+                        let here = format!("{} {}/{name}", t.name(), dir.display());
+                        match std::panic::catch_unwind(|| invariants::replay(case)) {
+                            Ok(Ok(())) => {}
+                            Ok(Err(report)) => failures.push(format!("{here}:\n{report}")),
+                            Err(_) => failures.push(format!("{here}: the harness panicked")),
+                        }
                     }
                     continue;
                 }
@@ -185,7 +194,7 @@ pub fn replay_step(root: &Path, shard: Option<Shard>) -> Step {
             }
         }
         let summary = format!(
-            "{n} committed program cases{}, {} fail; {harness_cases} impl_invariants cases (replayed by `cargo test`)",
+            "{n} committed program cases and {harness_cases} impl_invariants cases{}, {} fail",
             shard_note(shard),
             failures.len()
         );
@@ -321,6 +330,9 @@ mod tests {
         for s in &steps {
             assert!(s.passed, "{}: {}\n{}", s.name, s.summary, s.details);
         }
+        // The impl_invariants cases are replayed here too, in this process.
+        let harness_cases = steps[2].summary.split(" and ").nth(1).and_then(|t| t.split(' ').next()).and_then(|n| n.parse::<usize>().ok());
+        assert!(harness_cases.is_some_and(|n| n > 0), "{}", steps[2].summary);
         let text = report(&steps, Duration::from_secs(1));
         assert!(text.contains("gate PASSED: 3 of 3 steps passed"), "{text}");
     }

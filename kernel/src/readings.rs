@@ -1,4 +1,4 @@
-//! The declared readings on the oracle's side (`cycle_vocab::Readings`; docs/INTERPRETATION.md,
+//! The declared readings on the harness's side (`cycle_vocab::Readings`; docs/INTERPRETATION.md,
 //! "Declared readings"): `--reading NAME=VALUE` ([`Pins`]), the readings a candidate run is
 //! judged against (its greeting's declaration merged with the flags, [`settle`]), the readings a
 //! generated case draws ([`from_bits`]: one bit per reading, 0 the letter) and the per-value

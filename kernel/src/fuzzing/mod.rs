@@ -2,7 +2,8 @@
 //! the same code runs under libFuzzer, in `cargo test` (which replays the committed seeds and
 //! regression cases, `tests/tests/fuzz_replay.rs`), in `cyclecheck gate` and in `cyclecheck
 //! fuzz`. The fourth target, `impl_invariants`, runs the proof harness bodies
-//! (`cycle_proofs::invariants`); this crate knows only its name.
+//! (`cycle_proofs::invariants`); its committed cases are read, written and replayed by
+//! [`invariants`].
 //!
 //! Each body takes the fuzzer's raw bytes and returns `Err` with a report — the conformance
 //! relation's rich divergence, or the broken property — when the case fails; the targets panic

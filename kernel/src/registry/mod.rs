@@ -20,11 +20,11 @@ use std::cmp::Ordering;
 use std::collections::BTreeMap;
 
 mod group;
-mod run;
+mod sight;
 pub use group::{rule_group, RuleGroup};
-pub use run::{cycle_run, sight, CycleRun, Sighting};
+pub use sight::{cycle_run, sight, Sighting};
 #[cfg(any(test, feature = "test-aids"))]
-pub use run::sightings;
+pub use sight::sightings;
 
 /// One family.
 #[derive(Debug)]
@@ -274,6 +274,57 @@ impl Ord for Family {
 pub(crate) fn has_prefix(rule: Rule, prefixes: &[&str]) -> bool {
     let id = rule.id();
     prefixes.iter().any(|p| id.strip_prefix(p).is_some_and(|rest| rest.is_empty() || rest.starts_with('.')))
+}
+
+/// Which cycle a case runs ([`sight`]): a family, or one of two named rows. Ordered as
+/// reports list them: the families in table order, then the two rows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum CycleRun {
+    Family(&'static Family),
+    /// No block selects a family and the reference ends without an alarm.
+    NoCycle,
+    /// The reference alarms before any block that selects a family.
+    AlarmFirst,
+}
+
+impl CycleRun {
+    /// How reports name it: `G92`, `no cycle`, `alarm before a cycle`.
+    pub fn label(self) -> &'static str {
+        match self {
+            CycleRun::Family(f) => f.display,
+            CycleRun::NoCycle => "no cycle",
+            CycleRun::AlarmFirst => "alarm before a cycle",
+        }
+    }
+
+    /// A name for files and keys: the family's name, `no_cycle`, `alarm_before_cycle`.
+    pub fn name(self) -> &'static str {
+        match self {
+            CycleRun::Family(f) => f.name,
+            CycleRun::NoCycle => "no_cycle",
+            CycleRun::AlarmFirst => "alarm_before_cycle",
+        }
+    }
+
+    /// What the row counts, for a reader of the report.
+    pub fn describe(self) -> String {
+        match self {
+            CycleRun::Family(f) => {
+                let codes: Vec<String> = f.codes.iter().map(|c| format!("G{c}")).collect();
+                let dialects: Vec<String> = f.dialects.iter().map(|d| format!("{d:?}").to_lowercase()).collect();
+                format!("the first cycle block is {} under {}", codes.join(", "), dialects.join(" or "))
+            }
+            CycleRun::NoCycle => {
+                "no block selects a family and the reference ends without an alarm: rapids and feeds only, or nothing"
+                    .to_string()
+            }
+            CycleRun::AlarmFirst => concat!(
+                "the reference alarms before any cycle block runs: a configuration it refuses, garbage, a lexing ",
+                "error (in the cycle's own block too), a block before the cycle it refuses, a cycle code of another dialect"
+            )
+            .to_string(),
+        }
+    }
 }
 
 #[cfg(test)]
