@@ -9,7 +9,12 @@
 //! generators, the matrix's rule groups ([`rule_group`]) and the differential tests. A
 //! completeness test (`tests/tests/families.rs`) fails when a family is missing from one of them.
 //!
-//! Adding a family is a row here and its generator module in `gen/` (builder and bench case).
+//! Adding a family is: its spec module and a row in the spec's table (`cycle_spec::family`), its
+//! impl module and a row in impl's table (`cycle_impl::family`), a row here, its generator module
+//! in `gen/` (builder and bench case), its programs and snapshots, its rules in docs/RULES.md and
+//! its name in the named test lists of `tests/tests/differential.rs` and `zero_alloc.rs`. The
+//! families test fails until the three code tables agree and every consumer has it; the named
+//! lists fail naming the family they lack.
 
 use crate::gen::{self, Builder, Case};
 use cycle_spec::lex::Number;
