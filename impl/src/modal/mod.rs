@@ -4,6 +4,7 @@
 //! (3) values alphabetically; (4) missing words; (5) the cycle's own checks.
 
 use crate::config::Params;
+use crate::fixed::sat;
 use crate::contour::Contour;
 use crate::g90::{CutCode, CutState};
 use crate::g92::{G92State, PullMemo};
@@ -15,7 +16,7 @@ use crate::thread_move::ThreadCode;
 use crate::words::At;
 use codes::Codes;
 use contour_blocks::FirstValues;
-use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Rule};
+use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Move, Rule};
 use kind::{allowed, cycle_kind, Kind, COMMON};
 
 mod canned;
@@ -24,7 +25,6 @@ mod contour_blocks;
 mod cycles;
 mod flow;
 mod kind;
-mod linear;
 mod values;
 
 /// What the block interpreter may read besides the block: the running program's reader (a
@@ -38,7 +38,6 @@ pub struct Program<'p, 'a> {
     pub origin: lex::Mark,
     pub in_subprogram: bool,
 }
-
 
 /// The modal motion mode. CYC.ONESHOT: G70–G75, G83, G84 have no mode here — their blocks
 /// leave it, and so a G92/G90/G94 run, as it was before them.
@@ -296,7 +295,68 @@ impl Machine {
         }
         Ok(if end { Flow::End } else { Flow::Next })
     }
+
+    /// COM.ABSINC: the end point from X(U), Z(W): U and W are added to the position `from`; an
+    /// omitted axis takes `kept`.
+    fn end_point(v: &Vals, from: (i64, i64), kept: (i64, i64)) -> (i64, i64) {
+        let x = match (v.x, v.u) {
+            (Some(x), _) => x,
+            (None, Some(u)) => sat(i128::from(from.0) + i128::from(u)),
+            (None, None) => kept.0,
+        };
+        let z = match (v.z, v.w) {
+            (Some(z), _) => z,
+            (None, Some(w)) => sat(i128::from(from.1) + i128::from(w)),
+            (None, None) => kept.1,
+        };
+        (x, z)
+    }
+
+    /// NC201.ABSINC: the end point of a G00/G01 block under nc201 — X (a diameter count,
+    /// NC201.XMODE) and Z absolute under G90, distances from `from` under G91; an omitted axis
+    /// stays.
+    fn nc201_end_point(&self, v: &Vals, from: (i64, i64)) -> (i64, i64) {
+        let axis = |word: Option<i64>, here: i64| match word {
+            Some(w) if self.incremental => sat(i128::from(here) + i128::from(w)),
+            Some(w) => w,
+            None => here,
+        };
+        (axis(v.x, from.0), axis(v.z, from.1))
+    }
+
+    /// PRJ.MODAL: G00 / G01 blocks (and non-motion blocks in those modes); the move, if any.
+    fn linear(&mut self, kind: Kind, coded: bool, v: &Vals, axis: bool, line: u32) -> Result<Option<Move>, Alarm> {
+        if let Some(f) = v.lead {
+            self.feed = Some(f);
+        }
+        if coded {
+            self.mode = if kind == Kind::Feed { Mode::Feed } else { Mode::Rapid };
+        }
+        if !axis {
+            return Ok(None);
+        }
+        let (x, z) = if self.config.dialect == Dialect::Nc201 {
+            self.nc201_end_point(v, self.pos)
+        } else {
+            Self::end_point(v, self.pos, self.pos)
+        };
+        if kind == Kind::Feed {
+            // COM.LEAD: G01 with axis words needs a feed.
+            let Some(f) = self.feed else {
+                return Err(Alarm::new(AlarmCode::MissingWord, Some(b'F'), Rule::ComLead, line));
+            };
+            return Ok(Some(Move::feed(x, z, f, Rule::PrjModal)));
+        }
+        Ok(Some(Move::rapid(x, z, Rule::PrjModal)))
+    }
+
+    /// G50.COORD: X and Z make the current position (work coordinates from now on); an omitted
+    /// axis keeps its value. No motion, no event; the motion mode and any run go on.
+    fn g50(&mut self, v: &Vals) {
+        self.pos = (v.x.unwrap_or(self.pos.0), v.z.unwrap_or(self.pos.1));
+    }
 }
+
 
 #[cfg(test)]
 mod tests;

@@ -27,7 +27,6 @@ fn hold_rule(kind: &Kind) -> Rule {
     }
 }
 
-
 impl Layer {
     fn press(&mut self, button: Button, p: (i64, i64), rule: Rule) {
         self.out.push(Event::Press(Press { button, x: p.0, z: p.1, rule }));

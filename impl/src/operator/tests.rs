@@ -138,7 +138,6 @@ fn empty_script_is_u() {
     assert!(n >= 48, "{n}");
 }
 
-
 fn alarm(code: AlarmCode, rule: Rule, line: u32) -> String {
     Trace::alarm_line(&Alarm::new(code, None, rule, line))
 }
