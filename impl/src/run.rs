@@ -76,7 +76,7 @@ impl Run {
         match self {
             Run::Idle => (0, true),
             Run::Multipass(c) => c.fill(pos, out),
-            Run::G162(c) => fill_each(out, || c.next_event(pos)),
+            Run::G162(c) => c.fill(pos, out),
             Run::Cut(c) => fill_each(out, || c.next_event(pos)),
             Run::Rough(c) => c.fill(pos, out, contour),
             Run::Finish(c) => fill_each(out, || c.next_event(pos, contour)),

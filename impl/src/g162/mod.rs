@@ -7,6 +7,7 @@
 //! (docs/INTERPRETATION.md, "G162 (M004)").
 
 use crate::fixed::{sat, Tan};
+use crate::batch::{self, Batch};
 use crate::emit::emit;
 use crate::config::Params;
 use cycle_vocab::readings::G162Lead;
@@ -100,6 +101,8 @@ pub struct Cycle {
     /// The split, or `None` for a single pass.
     split: Option<SplitParams>,
     pass: Step,
+    /// The end points of the current pass's five moves (G162.PATH), computed once per pass.
+    points: [(i64, i64); STEPS as usize],
     header: Option<Pass>,
     step: u8,
 }
@@ -123,32 +126,56 @@ impl Cycle {
         }
     }
 
-    /// The move of `step` of the current pass (G162.PATH table).
-    fn move_at(&self, step: u8) -> Option<Move> {
+    /// The end points of the current pass's moves (G162.PATH table): ① Bn, ② En, ③ the leg's
+    /// end, ④ S.x at the leg's Z, ⑤ S.
+    fn pass_points(&self) -> [(i64, i64); STEPS as usize] {
         let d = i128::from(self.pass.depth);
         let t = self.shift(self.pass.depth);
         let s = i128::from(self.s);
         let bx = i128::from(self.x0) - 2 * s * d;
         let ex = bx + i128::from(self.wd);
-        let lz = i128::from(self.ze) + t;
-        let feed = |x: i128, z: i128, rule: Rule| Move::feed(sat(x), sat(z), self.h, rule);
-        match step {
-            // ① feed H from S (or the previous pass's return point) to Bn.
-            0 => Some(feed(bx, i128::from(self.start.1) + t, Rule::G162Path)),
-            // ② the thread to En; stepped under g162.lead = steps (a constant lead stays plain).
-            1 => {
-                let (x, z) = (sat(ex), sat(i128::from(self.ze1) + t));
-                let m = Move::variable_thread(x, z, self.lead, self.angle, self.change, self.change_angle, self.floor, Rule::G162F);
-                Some(if self.stepped { m.stepped() } else { m })
-            }
+        let lz = sat(i128::from(self.ze) + t);
+        [
+            // ① from S (or the previous pass's return point) to Bn.
+            (sat(bx), sat(i128::from(self.start.1) + t)),
+            // ② the thread to En.
+            (sat(ex), sat(i128::from(self.ze1) + t)),
             // ③ the 45° run-out leg: V outward on X (radius), V toward dz on Z.
-            2 => Some(feed(ex + 2 * s * i128::from(self.v), lz, Rule::G162V)),
+            (sat(ex + 2 * s * i128::from(self.v)), lz),
             // ④ retract X to S.x, opposite to the approach.
-            3 => Some(feed(i128::from(self.start.0), lz, Rule::G162Retract)),
+            (self.start.0, lz),
             // ⑤ return Z to S.
-            4 => Some(feed(i128::from(self.start.0), i128::from(self.start.1), Rule::G162Path)),
-            _ => None,
-        }
+            self.start,
+        ]
+    }
+
+    /// Makes `pass` the current pass, its header pending.
+    fn begin(&mut self, pass: Step) {
+        self.pass = pass;
+        self.step = 0;
+        self.points = self.pass_points();
+        self.header = Some(self.header());
+    }
+
+    /// The move of `step` of the current pass (G162.PATH table).
+    #[inline(always)]
+    fn move_at(&self, step: u8) -> Option<Move> {
+        let &(x, z) = self.points.get(usize::from(step))?;
+        Some(match step {
+            // ② the thread; stepped under g162.lead = steps (a constant lead stays plain).
+            1 => {
+                let m = Move::variable_thread(x, z, self.lead, self.angle, self.change, self.change_angle, self.floor, Rule::G162F);
+                if self.stepped {
+                    m.stepped()
+                } else {
+                    m
+                }
+            }
+            2 => Move::feed(x, z, self.h, Rule::G162V),
+            3 => Move::feed(x, z, self.h, Rule::G162Retract),
+            // ① feed H to Bn; ⑤ return Z.
+            _ => Move::feed(x, z, self.h, Rule::G162Path),
+        })
     }
 
     /// The segment (1…5, G162.PATH) of the last move emitted; after a pass header, 0. Read by
@@ -166,9 +193,8 @@ impl Cycle {
             }
             if self.step >= STEPS {
                 let split = self.split?;
-                self.pass = next(&split, &self.pass)?;
-                self.step = 0;
-                self.header = Some(self.header());
+                let pass = next(&split, &self.pass)?;
+                self.begin(pass);
                 continue;
             }
             let mv = self.move_at(self.step);
@@ -249,10 +275,11 @@ pub fn cycle(config: &Config, params: &Params, w: &Words, start: (i64, i64), lin
         sigma: s * w.a.signum(),
         split: w.split,
         pass,
+        points: [(0, 0); STEPS as usize],
         header: None,
         step: 0,
     };
-    c.header = Some(c.header());
+    c.begin(pass);
     Ok(c)
 }
 
@@ -278,6 +305,62 @@ fn growing_lead_fits(config: &Config, w: &Words, dz2: i128, stepped: bool) -> bo
     // for any coordinates within i64 (saturating beyond, which only makes the check stricter).
     let lhs = j.saturating_mul(f * f).saturating_add(360_000i128.saturating_mul(i128::from(w.i)).saturating_mul(s2));
     lhs <= j.saturating_mul(fmax * fmax)
+}
+
+/// The most events of one pass: its header and five moves.
+const PASS_EVENTS: usize = 1 + STEPS as usize;
+
+impl Batch<PASS_EVENTS> for Cycle {
+    fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
+        Cycle::next_event(self, pos)
+    }
+
+    fn begun(&self) -> bool {
+        self.header.is_none() && self.step < STEPS
+    }
+
+    fn ready(&mut self) -> bool {
+        if self.step < STEPS {
+            return true;
+        }
+        match self.split.and_then(|sp| next(&sp, &self.pass)) {
+            Some(pass) => {
+                self.begin(pass);
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// The pass's header and moves, unrolled, each event built in place.
+    #[inline(always)]
+    fn write_unit(&mut self, pos: &mut (i64, i64), slots: &mut [Event; PASS_EVENTS]) -> usize {
+        let mut n = 0;
+        let mut put = |e: Event| {
+            if let Some(slot) = slots.get_mut(n) {
+                *slot = e;
+                n += 1;
+            }
+        };
+        if let Some(h) = self.header.take() {
+            put(Event::Pass(h));
+        }
+        for step in 0..STEPS {
+            if let Some(e) = self.move_at(step).and_then(|m| emit(m, pos)) {
+                put(e);
+            }
+        }
+        self.step = STEPS;
+        n
+    }
+}
+
+impl Cycle {
+    /// Writes the cycle's next events into `out`, the same events as [`Cycle::next_event`],
+    /// whole passes at a time ([`batch::fill`]); how many, and whether the cycle is done.
+    pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> (usize, bool) {
+        batch::fill(self, pos, out)
+    }
 }
 
 #[cfg(test)]
