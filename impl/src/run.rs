@@ -80,7 +80,7 @@ impl Run {
             Run::Cut(c) => fill_each(out, || c.next_event(pos)),
             Run::Rough(c) => c.fill(pos, out, contour),
             Run::Finish(c) => fill_each(out, || c.next_event(pos, contour)),
-            Run::Peck(c) => fill_each(out, || c.next_event(pos)),
+            Run::Peck(c) => c.fill(pos, out),
             Run::Pattern(c) => fill_each(out, || c.next_event(pos, contour)),
             Run::Drill(c) => fill_each(out, || c.next_event(pos)),
             Run::Tap(c) => fill_each(out, || c.next_event(pos)),
