@@ -82,7 +82,7 @@ impl Run {
             Run::Finish(c) => fill_each(out, || c.next_event(pos, contour)),
             Run::Peck(c) => c.fill(pos, out),
             Run::Pattern(c) => fill_each(out, || c.next_event(pos, contour)),
-            Run::Drill(c) => fill_each(out, || c.next_event(pos)),
+            Run::Drill(c) => c.fill(pos, out),
             Run::Tap(c) => fill_each(out, || c.next_event(pos)),
             Run::Move(m) => {
                 let m = *m;
