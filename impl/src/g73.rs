@@ -132,5 +132,59 @@ impl Cycle {
     }
 }
 
+impl Cycle {
+    /// Writes the cycle's next events into `out`, the same events as [`Cycle::next_event`]:
+    /// each pass's contour elements (the bulk of the cycle) built in place from the contour
+    /// buffer, every other event through `next_event`. How many, and whether the cycle is done.
+    /// Bounded work: `out.len()` events and at most three skipped moves per pass change.
+    pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event], contour: &Contour) -> (usize, bool) {
+        let mut n = 0;
+        loop {
+            if self.phase == Phase::Contour && self.elem < self.len {
+                n += self.write_contour(pos, out.get_mut(n..).unwrap_or_default(), contour);
+            }
+            let Some(slot) = out.get_mut(n) else {
+                return (n, false);
+            };
+            match self.next_event(pos, contour) {
+                Some(e) => {
+                    *slot = e;
+                    n += 1;
+                }
+                None => return (n, true),
+            }
+        }
+    }
+
+    /// The current pass's contour elements from `elem` on, while `out` has room: as
+    /// `next_event`'s `Contour` phase. Returns how many events were written.
+    #[inline]
+    fn write_contour(&mut self, pos: &mut (i64, i64), out: &mut [Event], contour: &Contour) -> usize {
+        let (sx, sz) = self.shift;
+        let feed = self.w.feed;
+        let elements = contour.elements().get(self.elem..self.len).unwrap_or_default();
+        let mut at = *pos;
+        let mut n = 0;
+        for e in elements {
+            let Some(slot) = out.get_mut(n) else {
+                break;
+            };
+            self.elem += 1;
+            let (x, z) = (e.x.saturating_add(sx), e.z.saturating_add(sz));
+            let m = match e.kind {
+                Kind::Rapid => Move::rapid(x, z, Rule::G73Path),
+                Kind::Feed => Move::feed(x, z, feed, Rule::G73Path),
+                Kind::Arc(cw) => Move::arc(cw, x, z, e.cx.saturating_add(sx), e.cz.saturating_add(sz), feed, Rule::G73Path),
+            };
+            if let Some(ev) = emit(m, &mut at) {
+                *slot = ev;
+                n += 1;
+            }
+        }
+        *pos = at;
+        n
+    }
+}
+
 #[cfg(test)]
 mod tests;

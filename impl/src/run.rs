@@ -81,7 +81,7 @@ impl Run {
             Run::Rough(c) => c.fill(pos, out, contour),
             Run::Finish(c) => fill_each(out, || c.next_event(pos, contour)),
             Run::Peck(c) => c.fill(pos, out),
-            Run::Pattern(c) => fill_each(out, || c.next_event(pos, contour)),
+            Run::Pattern(c) => c.fill(pos, out, contour),
             Run::Drill(c) => c.fill(pos, out),
             Run::Tap(c) => fill_each(out, || c.next_event(pos)),
             Run::Move(m) => {
