@@ -171,15 +171,17 @@ impl Cycle {
             };
             self.elem += 1;
             let (x, z) = (e.x.saturating_add(sx), e.z.saturating_add(sz));
-            let m = match e.kind {
+            // PRJ.NOOP, as `emit`: a move to where the tool stands is not written.
+            if (x, z) == at {
+                continue;
+            }
+            at = (x, z);
+            *slot = Event::Move(match e.kind {
                 Kind::Rapid => Move::rapid(x, z, Rule::G73Path),
                 Kind::Feed => Move::feed(x, z, feed, Rule::G73Path),
                 Kind::Arc(cw) => Move::arc(cw, x, z, e.cx.saturating_add(sx), e.cz.saturating_add(sz), feed, Rule::G73Path),
-            };
-            if let Some(ev) = emit(m, &mut at) {
-                *slot = ev;
-                n += 1;
-            }
+            });
+            n += 1;
         }
         *pos = at;
         n
