@@ -83,7 +83,7 @@ impl Run {
             Run::Peck(c) => c.fill(pos, out),
             Run::Pattern(c) => c.fill(pos, out, contour),
             Run::Drill(c) => c.fill(pos, out),
-            Run::Tap(c) => fill_each(out, || c.next_event(pos)),
+            Run::Tap(c) => c.fill(pos, out),
             Run::Move(m) => {
                 let m = *m;
                 let Some(slot) = out.first_mut() else {
