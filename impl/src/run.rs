@@ -77,7 +77,7 @@ impl Run {
             Run::Idle => (0, true),
             Run::Multipass(c) => c.fill(pos, out),
             Run::G162(c) => c.fill(pos, out),
-            Run::Cut(c) => fill_each(out, || c.next_event(pos)),
+            Run::Cut(c) => c.fill(pos, out),
             Run::Rough(c) => c.fill(pos, out, contour),
             Run::Finish(c) => fill_each(out, || c.next_event(pos, contour)),
             Run::Peck(c) => c.fill(pos, out),
