@@ -79,7 +79,7 @@ impl Run {
             Run::G162(c) => c.fill(pos, out),
             Run::Cut(c) => c.fill(pos, out),
             Run::Rough(c) => c.fill(pos, out, contour),
-            Run::Finish(c) => fill_each(out, || c.next_event(pos, contour)),
+            Run::Finish(c) => c.fill(pos, out, contour),
             Run::Peck(c) => c.fill(pos, out),
             Run::Pattern(c) => c.fill(pos, out, contour),
             Run::Drill(c) => c.fill(pos, out),
@@ -100,21 +100,4 @@ impl Run {
             }
         }
     }
-}
-
-/// Writes the events of `next` into `out` one at a time until it ends or `out` is full;
-/// returns how many were written and whether it ended.
-#[inline]
-fn fill_each(out: &mut [Event], mut next: impl FnMut() -> Option<Event>) -> (usize, bool) {
-    let mut n = 0;
-    for slot in out.iter_mut() {
-        match next() {
-            Some(e) => {
-                *slot = e;
-                n += 1;
-            }
-            None => return (n, true),
-        }
-    }
-    (n, false)
 }
