@@ -7,12 +7,12 @@
 //! (docs/INTERPRETATION.md, "G162 (M004)").
 
 use crate::fixed::{sat, Tan};
-use crate::batch::{self, Batch};
 use crate::emit::emit;
 use crate::config::Params;
 use cycle_vocab::readings::G162Lead;
 use cycle_vocab::{Alarm, AlarmCode, Config, Event, Move, Pass, PassKind, Rule, Units};
 
+mod fill;
 mod split;
 
 pub use split::{first, next, pass_count, pitch_along_long_axis, Norm, SplitParams, Step};
@@ -88,22 +88,24 @@ pub struct Cycle {
     v: i64,
     /// H, feed of segments ①, ③–⑤.
     h: i64,
-    lead: i64,
-    angle: u32,
-    change: i64,
-    change_angle: u32,
-    floor: i64,
-    /// G162.I under g162.lead = steps (the letter): the lead changes in steps (`lead_steps`).
-    stepped: bool,
     /// tan of |A| (A in tenths of a degree; looked up once) and σ = s·sign(A).
     tan: Tan,
     sigma: i64,
     /// The split, or `None` for a single pass.
     split: Option<SplitParams>,
+    /// The split's P, Q (≥ 1) and k = ⌊P / Q⌋ full passes, as `split::next` reads them: the
+    /// full passes are stepped here without a division.
+    norm: (u64, u64, u64),
+    /// Segment ②'s move but its end point, built once: lead F, start angle B, the variable
+    /// lead of G162.I/J, stepped under g162.lead = steps (the letter; a constant lead stays
+    /// plain).
+    thread: Move,
     pass: Step,
     /// The end points of the current pass's five moves (G162.PATH), computed once per pass.
     points: [(i64, i64); STEPS as usize],
-    header: Option<Pass>,
+    /// The current pass's header is still to be emitted. (A flag, not the header itself: the
+    /// header is built from `pass` when it is written, from values in registers.)
+    header: bool,
     step: u8,
 }
 
@@ -113,11 +115,14 @@ const STEPS: u8 = 5;
 impl Cycle {
     /// G162.A: t(d) = σ·round(d·tan|A|).
     fn shift(&self, depth: i64) -> i128 {
+        if self.sigma == 0 {
+            return 0;
+        }
         let t = self.tan.times(depth.max(0).unsigned_abs());
         i128::from(self.sigma) * i128::from(t)
     }
 
-    fn header(&self) -> Pass {
+    fn pass_header(&self) -> Pass {
         Pass {
             index: self.pass.n,
             kind: PassKind::Rough,
@@ -128,6 +133,7 @@ impl Cycle {
 
     /// The end points of the current pass's moves (G162.PATH table): ① Bn, ② En, ③ the leg's
     /// end, ④ S.x at the leg's Z, ⑤ S.
+    #[inline(always)]
     fn pass_points(&self) -> [(i64, i64); STEPS as usize] {
         let d = i128::from(self.pass.depth);
         let t = self.shift(self.pass.depth);
@@ -150,11 +156,12 @@ impl Cycle {
     }
 
     /// Makes `pass` the current pass, its header pending.
+    #[inline(always)]
     fn begin(&mut self, pass: Step) {
         self.pass = pass;
         self.step = 0;
         self.points = self.pass_points();
-        self.header = Some(self.header());
+        self.header = true;
     }
 
     /// The move of `step` of the current pass (G162.PATH table).
@@ -163,19 +170,28 @@ impl Cycle {
         let &(x, z) = self.points.get(usize::from(step))?;
         Some(match step {
             // ② the thread; stepped under g162.lead = steps (a constant lead stays plain).
-            1 => {
-                let m = Move::variable_thread(x, z, self.lead, self.angle, self.change, self.change_angle, self.floor, Rule::G162F);
-                if self.stepped {
-                    m.stepped()
-                } else {
-                    m
-                }
-            }
+            1 => Move { x, z, ..self.thread },
             2 => Move::feed(x, z, self.h, Rule::G162V),
             3 => Move::feed(x, z, self.h, Rule::G162Retract),
             // ① feed H to Bn; ⑤ return Z.
             _ => Move::feed(x, z, self.h, Rule::G162Path),
         })
+    }
+
+    /// The pass after the current one (G162.PQ, G162.SPLIT: `split::next`), a full pass
+    /// stepped from the cached P, Q and k; `None` after the last.
+    #[inline(always)]
+    fn next_pass(&self) -> Option<Step> {
+        let split = self.split?;
+        let (p, q, k) = self.norm;
+        let prev = &self.pass;
+        if prev.stage == 0 && u64::from(prev.n) < k && prev.depth.max(0).unsigned_abs() < p {
+            // As `split::next`: full pass n at depth nQ ≤ kQ ≤ P.
+            let n = prev.n.checked_add(1)?;
+            let depth = u64::from(n).saturating_mul(q);
+            return Some(Step { n, depth: i64::try_from(depth).unwrap_or(i64::MAX), last: depth >= p, rule: Rule::G162Pq, stage: 0 });
+        }
+        next(&split, prev)
     }
 
     /// The segment (1…5, G162.PATH) of the last move emitted; after a pass header, 0. Read by
@@ -188,12 +204,12 @@ impl Cycle {
     /// work: at most `STEPS` (5) skipped moves and one pass change per call.
     pub fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
         loop {
-            if let Some(h) = self.header.take() {
-                return Some(Event::Pass(h));
+            if self.header {
+                self.header = false;
+                return Some(Event::Pass(self.pass_header()));
             }
             if self.step >= STEPS {
-                let split = self.split?;
-                let pass = next(&split, &self.pass)?;
+                let pass = self.next_pass()?;
                 self.begin(pass);
                 continue;
             }
@@ -254,6 +270,8 @@ pub fn cycle(config: &Config, params: &Params, w: &Words, start: (i64, i64), lin
         return Err(alarm(AlarmCode::Geometry, b'I', Rule::G162I));
     }
     let (change, change_angle, floor) = variable_lead(w);
+    // B = 360° is the zero mark itself.
+    let angle = if w.b >= 360_000 { 0 } else { w.b };
     let mut c = Cycle {
         start,
         x0: sat(x0),
@@ -263,20 +281,25 @@ pub fn cycle(config: &Config, params: &Params, w: &Words, start: (i64, i64), lin
         ze1: sat(ze1),
         v: w.v,
         h: w.h,
-        lead: w.lead,
-        // B = 360° is the zero mark itself.
-        angle: if w.b >= 360_000 { 0 } else { w.b },
-        change,
-        change_angle,
-        floor,
-        stepped,
         // |A| beyond 89° (never a legal word): 0, as `mul_tan`.
         tan: u32::try_from(w.a.unsigned_abs()).ok().and_then(Tan::tenths).unwrap_or(Tan::ZERO),
         sigma: s * w.a.signum(),
         split: w.split,
+        norm: w.split.map_or((1, 1, 1), |sp| {
+            let (p, q) = (sp.depth.max(1).unsigned_abs(), sp.allowance.max(1).unsigned_abs());
+            (p, q, p / q)
+        }),
+        thread: {
+            let m = Move::variable_thread(0, 0, w.lead, angle, change, change_angle, floor, Rule::G162F);
+            if stepped {
+                m.stepped()
+            } else {
+                m
+            }
+        },
         pass,
         points: [(0, 0); STEPS as usize],
-        header: None,
+        header: false,
         step: 0,
     };
     c.begin(pass);
@@ -305,62 +328,6 @@ fn growing_lead_fits(config: &Config, w: &Words, dz2: i128, stepped: bool) -> bo
     // for any coordinates within i64 (saturating beyond, which only makes the check stricter).
     let lhs = j.saturating_mul(f * f).saturating_add(360_000i128.saturating_mul(i128::from(w.i)).saturating_mul(s2));
     lhs <= j.saturating_mul(fmax * fmax)
-}
-
-/// The most events of one pass: its header and five moves.
-const PASS_EVENTS: usize = 1 + STEPS as usize;
-
-impl Batch<PASS_EVENTS> for Cycle {
-    fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
-        Cycle::next_event(self, pos)
-    }
-
-    fn begun(&self) -> bool {
-        self.header.is_none() && self.step < STEPS
-    }
-
-    fn ready(&mut self) -> bool {
-        if self.step < STEPS {
-            return true;
-        }
-        match self.split.and_then(|sp| next(&sp, &self.pass)) {
-            Some(pass) => {
-                self.begin(pass);
-                true
-            }
-            None => false,
-        }
-    }
-
-    /// The pass's header and moves, unrolled, each event built in place.
-    #[inline(always)]
-    fn write_unit(&mut self, pos: &mut (i64, i64), slots: &mut [Event; PASS_EVENTS]) -> usize {
-        let mut n = 0;
-        let mut put = |e: Event| {
-            if let Some(slot) = slots.get_mut(n) {
-                *slot = e;
-                n += 1;
-            }
-        };
-        if let Some(h) = self.header.take() {
-            put(Event::Pass(h));
-        }
-        for step in 0..STEPS {
-            if let Some(e) = self.move_at(step).and_then(|m| emit(m, pos)) {
-                put(e);
-            }
-        }
-        self.step = STEPS;
-        n
-    }
-}
-
-impl Cycle {
-    /// Writes the cycle's next events into `out`, the same events as [`Cycle::next_event`],
-    /// whole passes at a time ([`batch::fill`]); how many, and whether the cycle is done.
-    pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> (usize, bool) {
-        batch::fill(self, pos, out)
-    }
 }
 
 #[cfg(test)]
