@@ -84,7 +84,7 @@ impl Cycle {
 
     /// The rapid to the pass's translated start A + T_n; the contour follows.
     #[inline(always)]
-    fn to_start(&mut self) -> Move {
+    fn rapid_to_start(&mut self) -> Move {
         self.phase = Phase::Contour;
         Move::rapid(self.a.0.saturating_add(self.shift.0), self.a.1.saturating_add(self.shift.1), Rule::G73Path)
     }
@@ -115,7 +115,7 @@ impl Cycle {
                     Move::rapid(cx, self.a.1.saturating_add(self.w.dk).saturating_add(w), Rule::G73Path)
                 }
                 Phase::Header => return Some(self.pass_header()),
-                Phase::ToStart => self.to_start(),
+                Phase::ToStart => self.rapid_to_start(),
                 Phase::Contour => {
                     if self.elem >= self.len {
                         self.end_pass();
@@ -164,7 +164,7 @@ impl Cycle {
                     }
                 }
                 Phase::ToStart => {
-                    let m = self.to_start();
+                    let m = self.rapid_to_start();
                     if let (Some(e), Some(slot)) = (emit(m, pos), out.get_mut(n)) {
                         *slot = e;
                         n += 1;
