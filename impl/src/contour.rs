@@ -110,6 +110,15 @@ impl Contour {
         }
     }
 
+    /// The elements read, in order (empty before the first contour cycle).
+    #[inline]
+    pub fn elements(&self) -> &[Element] {
+        match &self.elements {
+            Some(e) => e.get(..self.len).unwrap_or_default(),
+            None => &[],
+        }
+    }
+
     /// The last element (B's block).
     pub fn last(&self) -> Element {
         self.get(self.len.saturating_sub(1))

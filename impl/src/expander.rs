@@ -29,8 +29,10 @@ impl<'a> Expander<'a> {
 
     /// Writes the next events of the stream into `out` and returns how many: the same events,
     /// in the same order, as the iterator, for a caller that keeps them in a buffer. Whatever
-    /// runs writes into `out` directly (`Run::fill`): a G92/G76/G78 cycle whole starts at a
-    /// time, each event built in place. With an operator script, one event at a time.
+    /// runs writes into `out` directly (`Run::fill`), each event built in place: a G92/G76/G78
+    /// cycle whole starts at a time, G162 whole passes, G84 a whole tap, G90/G94 the whole
+    /// cycle, G74/G75/G83 their pecks, G70/G71/G72/G73 their contour walks. With an operator
+    /// script, one event at a time.
     ///
     /// Fewer than `out.len()` events (0 included) means the stream ended, or an alarm follows:
     /// the alarm is returned by the next call as `Err`, after which the stream is over.

@@ -75,5 +75,64 @@ impl Cycle {
     }
 }
 
+impl Cycle {
+    /// Writes the cycle's next events into `out`, the same events as [`Cycle::next_event`]:
+    /// the contour's elements built in place from the contour slice, the header and the return
+    /// through `next_event`. How many, and whether the cycle is done. Bounded work:
+    /// `out.len()` events and at most one skipped element.
+    pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event], contour: &Contour) -> (usize, bool) {
+        let mut n = 0;
+        loop {
+            if self.header.is_none() && self.elem < self.n {
+                n += self.write_contour(pos, out.get_mut(n..).unwrap_or_default(), contour);
+            }
+            let Some(slot) = out.get_mut(n) else {
+                return (n, false);
+            };
+            match self.next_event(pos, contour) {
+                Some(e) => {
+                    *slot = e;
+                    n += 1;
+                }
+                None => return (n, true),
+            }
+        }
+    }
+
+    /// The contour's elements from `elem` on, while `out` has room: as `next_event`'s loop.
+    /// Returns how many events were written.
+    #[inline]
+    fn write_contour(&mut self, pos: &mut (i64, i64), out: &mut [Event], contour: &Contour) -> usize {
+        let (sx, sz) = self.shift;
+        let elements = contour.elements().get(self.elem..self.n).unwrap_or_default();
+        let mut at = *pos;
+        let mut n = 0;
+        for e in elements {
+            let Some(slot) = out.get_mut(n) else {
+                break;
+            };
+            self.elem += 1;
+            if e.feed != 0 {
+                self.feed = i64::from(e.feed);
+            }
+            let (x, z) = (e.x.saturating_add(sx), e.z.saturating_add(sz));
+            // PRJ.NOOP, as `emit`: a move to where the tool stands is not written.
+            if (x, z) == at {
+                continue;
+            }
+            at = (x, z);
+            let feed = self.feed;
+            *slot = Event::Move(match e.kind {
+                Kind::Rapid => Move::rapid(x, z, Rule::G70Path),
+                Kind::Feed => Move::feed(x, z, feed, Rule::G70Path),
+                Kind::Arc(cw) => Move::arc(cw, x, z, e.cx.saturating_add(sx), e.cz.saturating_add(sz), feed, Rule::G70Path),
+            });
+            n += 1;
+        }
+        *pos = at;
+        n
+    }
+}
+
 #[cfg(test)]
 mod tests;

@@ -70,6 +70,36 @@ impl Cycle {
         Ok(Cycle { a, w: *w, n: 1, shift: (0, 0), elem: 0, len: contour.len(), phase })
     }
 
+    /// The header of pass `n`, its offset T_n set (G73.DEPTH); the rapid to the start follows.
+    #[inline(always)]
+    fn pass_header(&mut self) -> Event {
+        let (ei, ek) = escape(&self.w, self.n);
+        self.shift = (ei.saturating_mul(2).saturating_add(self.w.allowance.0), ek.saturating_add(self.w.allowance.1));
+        self.elem = 0;
+        self.phase = Phase::ToStart;
+        let index = u32::try_from(self.n).unwrap_or(u32::MAX);
+        let diameter_depth = ei.saturating_mul(2).saturating_abs();
+        Event::Pass(Pass { index, kind: PassKind::Rough, diameter_depth, rule: Rule::G73Depth })
+    }
+
+    /// The rapid to the pass's translated start A + T_n; the contour follows.
+    #[inline(always)]
+    fn rapid_to_start(&mut self) -> Move {
+        self.phase = Phase::Contour;
+        Move::rapid(self.a.0.saturating_add(self.shift.0), self.a.1.saturating_add(self.shift.1), Rule::G73Path)
+    }
+
+    /// After the pass's last element: the next pass, or the return after the last.
+    #[inline(always)]
+    fn end_pass(&mut self) {
+        if self.n < self.w.d {
+            self.n += 1;
+            self.phase = Phase::Header;
+        } else {
+            self.phase = Phase::Return;
+        }
+    }
+
     /// The next event, updating the machine position; `None` when the cycle is done. PRJ.NOOP:
     /// a move to the current position is not emitted. Bounded work: within a pass only the
     /// rapid to the start and the ns element can be moves to where the tool stands (later
@@ -84,27 +114,11 @@ impl Cycle {
                     let cx = self.a.0.saturating_add(self.w.di.saturating_mul(2)).saturating_add(u);
                     Move::rapid(cx, self.a.1.saturating_add(self.w.dk).saturating_add(w), Rule::G73Path)
                 }
-                Phase::Header => {
-                    let (ei, ek) = escape(&self.w, self.n);
-                    self.shift = (ei.saturating_mul(2).saturating_add(self.w.allowance.0), ek.saturating_add(self.w.allowance.1));
-                    self.elem = 0;
-                    self.phase = Phase::ToStart;
-                    let index = u32::try_from(self.n).unwrap_or(u32::MAX);
-                    let diameter_depth = ei.saturating_mul(2).saturating_abs();
-                    return Some(Event::Pass(Pass { index, kind: PassKind::Rough, diameter_depth, rule: Rule::G73Depth }));
-                }
-                Phase::ToStart => {
-                    self.phase = Phase::Contour;
-                    Move::rapid(self.a.0.saturating_add(self.shift.0), self.a.1.saturating_add(self.shift.1), Rule::G73Path)
-                }
+                Phase::Header => return Some(self.pass_header()),
+                Phase::ToStart => self.rapid_to_start(),
                 Phase::Contour => {
                     if self.elem >= self.len {
-                        if self.n < self.w.d {
-                            self.n += 1;
-                            self.phase = Phase::Header;
-                        } else {
-                            self.phase = Phase::Return;
-                        }
+                        self.end_pass();
                         continue;
                     }
                     let e = contour.get(self.elem);
@@ -129,6 +143,76 @@ impl Cycle {
                 return Some(ev);
             }
         }
+    }
+}
+
+impl Cycle {
+    /// Writes the cycle's next events into `out`, the same events as [`Cycle::next_event`]:
+    /// each pass's contour elements (the bulk of the cycle) built in place from the contour
+    /// buffer, every other event through `next_event`. How many, and whether the cycle is done.
+    /// Bounded work: `out.len()` events and at most three skipped moves per pass change.
+    pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event], contour: &Contour) -> (usize, bool) {
+        let mut n = 0;
+        while n < out.len() {
+            // The passes' events are built here, in place; the rapid to C, the return and the
+            // end through `next_event` (once a cycle: its event comes back through memory).
+            match self.phase {
+                Phase::Header => {
+                    if let Some(slot) = out.get_mut(n) {
+                        *slot = self.pass_header();
+                        n += 1;
+                    }
+                }
+                Phase::ToStart => {
+                    let m = self.rapid_to_start();
+                    if let (Some(e), Some(slot)) = (emit(m, pos), out.get_mut(n)) {
+                        *slot = e;
+                        n += 1;
+                    }
+                }
+                Phase::Contour if self.elem >= self.len => self.end_pass(),
+                Phase::Contour => n += self.write_contour(pos, out.get_mut(n..).unwrap_or_default(), contour),
+                _ => match (self.next_event(pos, contour), out.get_mut(n)) {
+                    (Some(e), Some(slot)) => {
+                        *slot = e;
+                        n += 1;
+                    }
+                    _ => return (n, true),
+                },
+            }
+        }
+        (n, false)
+    }
+
+    /// The current pass's contour elements from `elem` on, while `out` has room: as
+    /// `next_event`'s `Contour` phase. Returns how many events were written.
+    #[inline]
+    fn write_contour(&mut self, pos: &mut (i64, i64), out: &mut [Event], contour: &Contour) -> usize {
+        let (sx, sz) = self.shift;
+        let feed = self.w.feed;
+        let elements = contour.elements().get(self.elem..self.len).unwrap_or_default();
+        let mut at = *pos;
+        let mut n = 0;
+        for e in elements {
+            let Some(slot) = out.get_mut(n) else {
+                break;
+            };
+            self.elem += 1;
+            let (x, z) = (e.x.saturating_add(sx), e.z.saturating_add(sz));
+            // PRJ.NOOP, as `emit`: a move to where the tool stands is not written.
+            if (x, z) == at {
+                continue;
+            }
+            at = (x, z);
+            *slot = Event::Move(match e.kind {
+                Kind::Rapid => Move::rapid(x, z, Rule::G73Path),
+                Kind::Feed => Move::feed(x, z, feed, Rule::G73Path),
+                Kind::Arc(cw) => Move::arc(cw, x, z, e.cx.saturating_add(sx), e.cz.saturating_add(sz), feed, Rule::G73Path),
+            });
+            n += 1;
+        }
+        *pos = at;
+        n
     }
 }
 

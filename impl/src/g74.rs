@@ -253,5 +253,61 @@ impl Cycle {
     }
 }
 
+impl Cycle {
+    /// Writes the cycle's next events into `out`, the same events as [`Cycle::next_event`]:
+    /// the pecks of a column and their returns (the bulk of the cycle) built in place two at a
+    /// time, every other event through `next_event`. How many, and whether the cycle is done.
+    /// Bounded work: `out.len()` events.
+    pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> (usize, bool) {
+        let mut n = 0;
+        loop {
+            if self.phase == Phase::Peck && self.peck_i < self.pecks {
+                n += self.write_pecks(pos, out.get_mut(n..).unwrap_or_default());
+            }
+            let Some(slot) = out.get_mut(n) else {
+                return (n, false);
+            };
+            match self.next_event(pos) {
+                Some(e) => {
+                    *slot = e;
+                    n += 1;
+                }
+                None => return (n, true),
+            }
+        }
+    }
+
+    /// The pecks before the column's last and their returns, while two events fit: as
+    /// `next_event`'s `Peck` and `Return` phases. Returns how many events were written.
+    #[inline]
+    fn write_pecks(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> usize {
+        let (_, peck_rule, _, _, return_rule) = self.code.rules();
+        let s = self.column(self.col);
+        let back = self.c.saturating_mul(self.e);
+        let mut at = *pos;
+        let mut n = 0;
+        while self.peck_i < self.pecks && out.len().saturating_sub(n) >= 2 {
+            let end = self.peck_end(self.peck_i);
+            self.peck_i += 1;
+            let (x, z) = self.code.machine((end, s));
+            if let Some(e) = emit(Move::feed(x, z, self.feed, peck_rule), &mut at) {
+                if let Some(slot) = out.get_mut(n) {
+                    *slot = e;
+                    n += 1;
+                }
+            }
+            let (x, z) = self.code.machine((end.saturating_sub(back), s));
+            if let Some(e) = emit(Move::rapid(x, z, return_rule), &mut at) {
+                if let Some(slot) = out.get_mut(n) {
+                    *slot = e;
+                    n += 1;
+                }
+            }
+        }
+        *pos = at;
+        n
+    }
+}
+
 #[cfg(test)]
 mod tests;

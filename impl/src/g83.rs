@@ -156,5 +156,55 @@ impl Cycle {
     }
 }
 
+impl Cycle {
+    /// Writes the cycle's next events into `out`, the same events as [`Cycle::next_event`]:
+    /// the pecks before the last with their rapids up and down (the bulk of the cycle) built in
+    /// place three at a time, every other event through `next_event`. How many, and whether the
+    /// cycle is done. Bounded work: `out.len()` events.
+    pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> (usize, bool) {
+        let mut n = 0;
+        loop {
+            if self.phase == Phase::Peck && self.peck_k < self.pecks {
+                n += self.write_pecks(pos, out.get_mut(n..).unwrap_or_default());
+            }
+            let Some(slot) = out.get_mut(n) else {
+                return (n, false);
+            };
+            match self.next_event(pos) {
+                Some(e) => {
+                    *slot = e;
+                    n += 1;
+                }
+                None => return (n, true),
+            }
+        }
+    }
+
+    /// The pecks before the last, each with its rapid up to the R level and down to the depth
+    /// reached, while three events fit: as `next_event`'s `Peck`, `Up` and `Down` phases.
+    /// Returns how many events were written.
+    #[inline]
+    fn write_pecks(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> usize {
+        let rule = Rule::G83Peck;
+        let x = self.lv.x;
+        let mut at = *pos;
+        let mut n = 0;
+        while self.peck_k < self.pecks && out.len().saturating_sub(n) >= 3 {
+            let z = self.peck_end(self.peck_k);
+            self.peck_k += 1;
+            for m in [Move::feed(x, z, self.feed, rule), Move::rapid(x, self.lv.r_level, rule), Move::rapid(x, z, rule)] {
+                if let Some(e) = emit(m, &mut at) {
+                    if let Some(slot) = out.get_mut(n) {
+                        *slot = e;
+                        n += 1;
+                    }
+                }
+            }
+        }
+        *pos = at;
+        n
+    }
+}
+
 #[cfg(test)]
 mod tests;

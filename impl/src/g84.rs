@@ -4,6 +4,7 @@
 //! the bottom, the dwell P, the spindle reversed, the thread move back to the R level at the same
 //! lead, the spindle forward, a rapid to the initial level. Eight events at most; O(1) state.
 
+use crate::batch::{self, Batch};
 use crate::emit::emit;
 use crate::fixed::div_round;
 use crate::g83::{Levels, Words};
@@ -62,5 +63,64 @@ impl Cycle {
                 return Some(e);
             }
         }
+    }
+}
+
+/// The most events of a tap: its header and seven steps.
+const TAP_EVENTS: usize = 8;
+
+impl Batch<TAP_EVENTS> for Cycle {
+    fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
+        Cycle::next_event(self, pos)
+    }
+
+    fn begun(&self) -> bool {
+        self.step != 0 && usize::from(self.step) < TAP_EVENTS
+    }
+
+    fn ready(&mut self) -> bool {
+        self.step == 0
+    }
+
+    /// The whole tap, as `next_event`'s steps 0…7, each event built in place.
+    #[inline(always)]
+    fn write_unit(&mut self, pos: &mut (i64, i64), slots: &mut [Event; TAP_EVENTS]) -> usize {
+        let rule = Rule::G84Path;
+        let lv = self.lv;
+        let mut n = 0;
+        let mut put = |e: Event| {
+            if let Some(slot) = slots.get_mut(n) {
+                *slot = e;
+                n += 1;
+            }
+        };
+        put(lv.header(rule));
+        if let Some(e) = emit(Move::rapid(lv.x, lv.r_level, rule), pos) {
+            put(e);
+        }
+        if let Some(e) = emit(Move::thread(lv.x, lv.bottom, self.lead, 0, rule), pos) {
+            put(e);
+        }
+        if self.dwell > 0 {
+            put(Event::Dwell(Dwell { ms: self.dwell, rule }));
+        }
+        put(Event::Spindle(Spindle { state: SpindleState::Reverse, rule }));
+        if let Some(e) = emit(Move::thread(lv.x, lv.r_level, self.lead, 0, rule), pos) {
+            put(e);
+        }
+        put(Event::Spindle(Spindle { state: SpindleState::Forward, rule }));
+        if let Some(e) = emit(Move::rapid(lv.x, lv.initial, rule), pos) {
+            put(e);
+        }
+        self.step = TAP_EVENTS as u8;
+        n
+    }
+}
+
+impl Cycle {
+    /// Writes the tap's next events into `out`, the same events as [`Cycle::next_event`], the
+    /// whole tap at once where it fits ([`batch::fill`]); how many, and whether it is done.
+    pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> (usize, bool) {
+        batch::fill(self, pos, out)
     }
 }

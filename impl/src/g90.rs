@@ -7,6 +7,7 @@
 //! difference below is exact in `i64`; saturating operations only keep an impossible overflow
 //! from panicking.
 
+use crate::batch::{self, Batch};
 use crate::emit::emit;
 use cycle_vocab::{Alarm, AlarmCode, Event, Move, Pass, PassKind, Rule};
 
@@ -168,6 +169,53 @@ impl Cycle {
             }
         }
         None
+    }
+}
+
+/// The most events of a cycle: its header and four moves.
+const CUT_EVENTS: usize = 1 + STEPS as usize;
+
+impl Batch<CUT_EVENTS> for Cycle {
+    fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
+        Cycle::next_event(self, pos)
+    }
+
+    fn begun(&self) -> bool {
+        self.header.is_none() && self.step < STEPS
+    }
+
+    fn ready(&mut self) -> bool {
+        self.step < STEPS
+    }
+
+    /// The header and the four moves, unrolled, each event built in place.
+    #[inline(always)]
+    fn write_unit(&mut self, pos: &mut (i64, i64), slots: &mut [Event; CUT_EVENTS]) -> usize {
+        let mut n = 0;
+        let mut put = |e: Event| {
+            if let Some(slot) = slots.get_mut(n) {
+                *slot = e;
+                n += 1;
+            }
+        };
+        if let Some(h) = self.header.take() {
+            put(Event::Pass(h));
+        }
+        for step in 0..STEPS {
+            if let Some(e) = self.move_at(step).and_then(|m| emit(m, pos)) {
+                put(e);
+            }
+        }
+        self.step = STEPS;
+        n
+    }
+}
+
+impl Cycle {
+    /// Writes the cycle's next events into `out`, the same events as [`Cycle::next_event`], the
+    /// whole cycle at once where it fits ([`batch::fill`]); how many, and whether it is done.
+    pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> (usize, bool) {
+        batch::fill(self, pos, out)
     }
 }
 

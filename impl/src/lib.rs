@@ -65,6 +65,7 @@
 pub mod arc;
 pub mod config;
 pub mod contour;
+mod batch;
 mod emit;
 mod expander;
 pub mod family;

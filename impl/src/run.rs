@@ -76,14 +76,14 @@ impl Run {
         match self {
             Run::Idle => (0, true),
             Run::Multipass(c) => c.fill(pos, out),
-            Run::G162(c) => fill_each(out, || c.next_event(pos)),
-            Run::Cut(c) => fill_each(out, || c.next_event(pos)),
+            Run::G162(c) => c.fill(pos, out),
+            Run::Cut(c) => c.fill(pos, out),
             Run::Rough(c) => c.fill(pos, out, contour),
-            Run::Finish(c) => fill_each(out, || c.next_event(pos, contour)),
-            Run::Peck(c) => fill_each(out, || c.next_event(pos)),
-            Run::Pattern(c) => fill_each(out, || c.next_event(pos, contour)),
-            Run::Drill(c) => fill_each(out, || c.next_event(pos)),
-            Run::Tap(c) => fill_each(out, || c.next_event(pos)),
+            Run::Finish(c) => c.fill(pos, out, contour),
+            Run::Peck(c) => c.fill(pos, out),
+            Run::Pattern(c) => c.fill(pos, out, contour),
+            Run::Drill(c) => c.fill(pos, out),
+            Run::Tap(c) => c.fill(pos, out),
             Run::Move(m) => {
                 let m = *m;
                 let Some(slot) = out.first_mut() else {
@@ -100,21 +100,4 @@ impl Run {
             }
         }
     }
-}
-
-/// Writes the events of `next` into `out` one at a time until it ends or `out` is full;
-/// returns how many were written and whether it ended.
-#[inline]
-fn fill_each(out: &mut [Event], mut next: impl FnMut() -> Option<Event>) -> (usize, bool) {
-    let mut n = 0;
-    for slot in out.iter_mut() {
-        match next() {
-            Some(e) => {
-                *slot = e;
-                n += 1;
-            }
-            None => return (n, true),
-        }
-    }
-    (n, false)
 }

@@ -40,6 +40,7 @@ pub struct ThreadWords {
 /// The thread move from `from` to `to` (X diameter). G34 lead bound (check step 5): with
 /// s2 twice the long-axis travel in lead counts, L² = F² + K·s2 must stay > 0 (K < 0) and
 /// ≤ Fmax² (K > 0), else `GEOMETRY` on K, rule G34.
+#[inline(always)]
 pub fn thread_move(
     code: ThreadCode,
     from: (i64, i64),

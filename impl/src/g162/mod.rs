@@ -12,6 +12,7 @@ use crate::config::Params;
 use cycle_vocab::readings::G162Lead;
 use cycle_vocab::{Alarm, AlarmCode, Config, Event, Move, Pass, PassKind, Rule, Units};
 
+mod fill;
 mod split;
 
 pub use split::{first, next, pass_count, pitch_along_long_axis, Norm, SplitParams, Step};
@@ -87,20 +88,24 @@ pub struct Cycle {
     v: i64,
     /// H, feed of segments ①, ③–⑤.
     h: i64,
-    lead: i64,
-    angle: u32,
-    change: i64,
-    change_angle: u32,
-    floor: i64,
-    /// G162.I under g162.lead = steps (the letter): the lead changes in steps (`lead_steps`).
-    stepped: bool,
     /// tan of |A| (A in tenths of a degree; looked up once) and σ = s·sign(A).
     tan: Tan,
     sigma: i64,
     /// The split, or `None` for a single pass.
     split: Option<SplitParams>,
+    /// The split's P, Q (≥ 1) and k = ⌊P / Q⌋ full passes, as `split::next` reads them: the
+    /// full passes are stepped here without a division.
+    norm: (u64, u64, u64),
+    /// Segment ②'s move but its end point, built once: lead F, start angle B, the variable
+    /// lead of G162.I/J, stepped under g162.lead = steps (the letter; a constant lead stays
+    /// plain).
+    thread: Move,
     pass: Step,
-    header: Option<Pass>,
+    /// The end points of the current pass's five moves (G162.PATH), computed once per pass.
+    points: [(i64, i64); STEPS as usize],
+    /// The current pass's header is still to be emitted. (A flag, not the header itself: the
+    /// header is built from `pass` when it is written, from values in registers.)
+    header: bool,
     step: u8,
 }
 
@@ -110,11 +115,14 @@ const STEPS: u8 = 5;
 impl Cycle {
     /// G162.A: t(d) = σ·round(d·tan|A|).
     fn shift(&self, depth: i64) -> i128 {
+        if self.sigma == 0 {
+            return 0;
+        }
         let t = self.tan.times(depth.max(0).unsigned_abs());
         i128::from(self.sigma) * i128::from(t)
     }
 
-    fn header(&self) -> Pass {
+    fn pass_header(&self) -> Pass {
         Pass {
             index: self.pass.n,
             kind: PassKind::Rough,
@@ -123,32 +131,67 @@ impl Cycle {
         }
     }
 
-    /// The move of `step` of the current pass (G162.PATH table).
-    fn move_at(&self, step: u8) -> Option<Move> {
+    /// The end points of the current pass's moves (G162.PATH table): ① Bn, ② En, ③ the leg's
+    /// end, ④ S.x at the leg's Z, ⑤ S.
+    #[inline(always)]
+    fn pass_points(&self) -> [(i64, i64); STEPS as usize] {
         let d = i128::from(self.pass.depth);
         let t = self.shift(self.pass.depth);
         let s = i128::from(self.s);
         let bx = i128::from(self.x0) - 2 * s * d;
         let ex = bx + i128::from(self.wd);
-        let lz = i128::from(self.ze) + t;
-        let feed = |x: i128, z: i128, rule: Rule| Move::feed(sat(x), sat(z), self.h, rule);
-        match step {
-            // ① feed H from S (or the previous pass's return point) to Bn.
-            0 => Some(feed(bx, i128::from(self.start.1) + t, Rule::G162Path)),
-            // ② the thread to En; stepped under g162.lead = steps (a constant lead stays plain).
-            1 => {
-                let (x, z) = (sat(ex), sat(i128::from(self.ze1) + t));
-                let m = Move::variable_thread(x, z, self.lead, self.angle, self.change, self.change_angle, self.floor, Rule::G162F);
-                Some(if self.stepped { m.stepped() } else { m })
-            }
+        let lz = sat(i128::from(self.ze) + t);
+        [
+            // ① from S (or the previous pass's return point) to Bn.
+            (sat(bx), sat(i128::from(self.start.1) + t)),
+            // ② the thread to En.
+            (sat(ex), sat(i128::from(self.ze1) + t)),
             // ③ the 45° run-out leg: V outward on X (radius), V toward dz on Z.
-            2 => Some(feed(ex + 2 * s * i128::from(self.v), lz, Rule::G162V)),
+            (sat(ex + 2 * s * i128::from(self.v)), lz),
             // ④ retract X to S.x, opposite to the approach.
-            3 => Some(feed(i128::from(self.start.0), lz, Rule::G162Retract)),
+            (self.start.0, lz),
             // ⑤ return Z to S.
-            4 => Some(feed(i128::from(self.start.0), i128::from(self.start.1), Rule::G162Path)),
-            _ => None,
+            self.start,
+        ]
+    }
+
+    /// Makes `pass` the current pass, its header pending.
+    #[inline(always)]
+    fn begin(&mut self, pass: Step) {
+        self.pass = pass;
+        self.step = 0;
+        self.points = self.pass_points();
+        self.header = true;
+    }
+
+    /// The move of `step` of the current pass (G162.PATH table).
+    #[inline(always)]
+    fn move_at(&self, step: u8) -> Option<Move> {
+        let &(x, z) = self.points.get(usize::from(step))?;
+        Some(match step {
+            // ② the thread; stepped under g162.lead = steps (a constant lead stays plain).
+            1 => Move { x, z, ..self.thread },
+            2 => Move::feed(x, z, self.h, Rule::G162V),
+            3 => Move::feed(x, z, self.h, Rule::G162Retract),
+            // ① feed H to Bn; ⑤ return Z.
+            _ => Move::feed(x, z, self.h, Rule::G162Path),
+        })
+    }
+
+    /// The pass after the current one (G162.PQ, G162.SPLIT: `split::next`), a full pass
+    /// stepped from the cached P, Q and k; `None` after the last.
+    #[inline(always)]
+    fn next_pass(&self) -> Option<Step> {
+        let split = self.split?;
+        let (p, q, k) = self.norm;
+        let prev = &self.pass;
+        if prev.stage == 0 && u64::from(prev.n) < k && prev.depth.max(0).unsigned_abs() < p {
+            // As `split::next`: full pass n at depth nQ ≤ kQ ≤ P.
+            let n = prev.n.checked_add(1)?;
+            let depth = u64::from(n).saturating_mul(q);
+            return Some(Step { n, depth: i64::try_from(depth).unwrap_or(i64::MAX), last: depth >= p, rule: Rule::G162Pq, stage: 0 });
         }
+        next(&split, prev)
     }
 
     /// The segment (1…5, G162.PATH) of the last move emitted; after a pass header, 0. Read by
@@ -161,14 +204,13 @@ impl Cycle {
     /// work: at most `STEPS` (5) skipped moves and one pass change per call.
     pub fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
         loop {
-            if let Some(h) = self.header.take() {
-                return Some(Event::Pass(h));
+            if self.header {
+                self.header = false;
+                return Some(Event::Pass(self.pass_header()));
             }
             if self.step >= STEPS {
-                let split = self.split?;
-                self.pass = next(&split, &self.pass)?;
-                self.step = 0;
-                self.header = Some(self.header());
+                let pass = self.next_pass()?;
+                self.begin(pass);
                 continue;
             }
             let mv = self.move_at(self.step);
@@ -228,6 +270,8 @@ pub fn cycle(config: &Config, params: &Params, w: &Words, start: (i64, i64), lin
         return Err(alarm(AlarmCode::Geometry, b'I', Rule::G162I));
     }
     let (change, change_angle, floor) = variable_lead(w);
+    // B = 360° is the zero mark itself.
+    let angle = if w.b >= 360_000 { 0 } else { w.b };
     let mut c = Cycle {
         start,
         x0: sat(x0),
@@ -237,22 +281,28 @@ pub fn cycle(config: &Config, params: &Params, w: &Words, start: (i64, i64), lin
         ze1: sat(ze1),
         v: w.v,
         h: w.h,
-        lead: w.lead,
-        // B = 360° is the zero mark itself.
-        angle: if w.b >= 360_000 { 0 } else { w.b },
-        change,
-        change_angle,
-        floor,
-        stepped,
         // |A| beyond 89° (never a legal word): 0, as `mul_tan`.
         tan: u32::try_from(w.a.unsigned_abs()).ok().and_then(Tan::tenths).unwrap_or(Tan::ZERO),
         sigma: s * w.a.signum(),
         split: w.split,
+        norm: w.split.map_or((1, 1, 1), |sp| {
+            let (p, q) = (sp.depth.max(1).unsigned_abs(), sp.allowance.max(1).unsigned_abs());
+            (p, q, p / q)
+        }),
+        thread: {
+            let m = Move::variable_thread(0, 0, w.lead, angle, change, change_angle, floor, Rule::G162F);
+            if stepped {
+                m.stepped()
+            } else {
+                m
+            }
+        },
         pass,
-        header: None,
+        points: [(0, 0); STEPS as usize],
+        header: false,
         step: 0,
     };
-    c.header = Some(c.header());
+    c.begin(pass);
     Ok(c)
 }
 

@@ -129,6 +129,7 @@ impl Machine {
 
     /// G32, G33, G34 (PRJ.MODAL, M003): modal thread moves. (4) a block with axis words needs a
     /// lead (COM.LEAD), G34 its K (G34); (5) the G34 lead bound; then the thread move, if any.
+    #[inline(always)]
     pub(super) fn thread(
         &mut self,
         code: ThreadCode,

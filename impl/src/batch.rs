@@ -1,0 +1,62 @@
+//! The batch path of a running cycle ([`crate::Expander::fill`]): a cycle whose events come in
+//! units of a fixed most (a pass, a start) writes whole units straight into the caller's
+//! buffer, each event built in place, and falls back to its one-event state machine only for a
+//! unit begun by `next_event` or where less room than a unit is left. The events are those of
+//! `next_event`, in the same order.
+
+use cycle_vocab::Event;
+
+/// A cycle that writes its events in units of at most `N` events.
+pub(crate) trait Batch<const N: usize> {
+    /// The cycle's one-event state machine.
+    fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event>;
+    /// A unit was begun by `next_event` and is not finished.
+    fn begun(&self) -> bool;
+    /// Makes the next unit current when the current one is finished; `false` when the cycle is
+    /// done. Called only when no unit is begun.
+    fn ready(&mut self) -> bool;
+    /// Writes the whole current unit into `slots` (its events as `next_event` would give
+    /// them), leaving it finished; returns how many were written.
+    fn write_unit(&mut self, pos: &mut (i64, i64), slots: &mut [Event; N]) -> usize;
+}
+
+/// Writes the next events of `c` into `out`: a begun unit one event at a time, then whole
+/// units while one fits, then one event at a time. Returns how many were written and whether
+/// the cycle is done. Bounded work: `out.len()` events, one unit change per unit.
+#[inline]
+pub(crate) fn fill<const N: usize, C: Batch<N>>(c: &mut C, pos: &mut (i64, i64), out: &mut [Event]) -> (usize, bool) {
+    let mut n = 0;
+    while c.begun() {
+        let Some(slot) = out.get_mut(n) else {
+            return (n, false);
+        };
+        match c.next_event(pos) {
+            Some(e) => {
+                *slot = e;
+                n += 1;
+            }
+            None => return (n, true),
+        }
+    }
+    // Whole units, the position kept in a local.
+    let mut at = *pos;
+    while let Some(slots) = out.get_mut(n..).and_then(|r| r.first_chunk_mut::<N>()) {
+        if !c.ready() {
+            *pos = at;
+            return (n, true);
+        }
+        n += c.write_unit(&mut at, slots);
+    }
+    *pos = at;
+    // Less room than a unit: one event at a time.
+    while let Some(slot) = out.get_mut(n) {
+        match c.next_event(pos) {
+            Some(e) => {
+                *slot = e;
+                n += 1;
+            }
+            None => return (n, true),
+        }
+    }
+    (n, false)
+}
