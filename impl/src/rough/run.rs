@@ -70,9 +70,10 @@ impl Roughing {
     fn write_layer(&mut self, pos: &mut (i64, i64), slots: &mut [Event; LAYER_EVENTS], contour: &Contour) -> usize {
         let [first, rest @ ..] = slots;
         *first = Event::Pass(self.layer_header(contour));
+        let ak = self.layer_at(self.k);
         let mut n = 0;
         for i in 1..=4u8 {
-            let m = self.layer_move(i);
+            let m = self.layer_move(i, ak);
             if (m.x, m.z) != *pos {
                 *pos = (m.x, m.z);
                 if let Some(slot) = rest.get_mut(n) {
@@ -94,7 +95,7 @@ impl Roughing {
         if step == 0 {
             return Some(Event::Pass(self.layer_header(contour)));
         }
-        let m = self.layer_move(step);
+        let m = self.layer_move(step, self.layer_at(self.k));
         if step >= 4 {
             self.next_layer();
         }
@@ -116,11 +117,10 @@ impl Roughing {
 
     /// Move `step` (1–4) of the current layer: ① infeed along a to a_k in the ns block's mode,
     /// ② the cut at feed to b_k (G71.LAYER), ③ the 45° retract at feed, ④ the rapid back to A.b
-    /// (G71.RETRACT).
+    /// (G71.RETRACT); `ak` = a_k, `layer_at(k)`.
     #[inline(always)]
-    fn layer_move(&self, step: u8) -> Move {
+    fn layer_move(&self, step: u8, ak: i64) -> Move {
         let rules = self.axis.rules();
-        let ak = self.layer_at(self.k);
         let b0 = self.axis.b(self.start);
         match step {
             1 => self.linear(self.rapid_infeed, self.axis.point(ak, b0), rules.layer),
