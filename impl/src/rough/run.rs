@@ -1,7 +1,7 @@
 //! The run of a G71/G72 cycle, one event at a time: the layers (G71.LAYER, G71.RETRACT), the
 //! semi-finish pass along the translated contour (G71.LASTPASS) and the return (G71.RETURN).
 
-use super::{Phase, Roughing};
+use super::{Axis, Phase, Roughing};
 use crate::contour::{Contour, Element, Kind};
 use crate::emit::emit;
 use crate::fixed::sat;
@@ -42,7 +42,11 @@ impl Roughing {
     /// it is kept, else one event at a time. Returns how many were written and whether the
     /// cycle is done.
     pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event], contour: &Contour) -> (usize, bool) {
-        let mut n = 0;
+        // The whole layers first, one loop per axis (the axis then a constant in each).
+        let mut n = match self.axis {
+            Axis::G71 => self.write_layers(Axis::G71, pos, out, contour),
+            Axis::G72 => self.write_layers(Axis::G72, pos, out, contour),
+        };
         loop {
             if self.phase == Phase::Layer && self.step_no == 0 {
                 if let Some(slots) = out.get_mut(n..).and_then(|r| r.first_chunk_mut::<LAYER_EVENTS>()) {
@@ -61,6 +65,20 @@ impl Roughing {
                 None => return (n, true),
             }
         }
+    }
+
+    /// Whole layers into `out` while one fits, `self.axis` being `axis`; returns how many
+    /// events were written.
+    #[inline(always)]
+    fn write_layers(&mut self, axis: Axis, pos: &mut (i64, i64), out: &mut [Event], contour: &Contour) -> usize {
+        let mut n = 0;
+        while self.phase == Phase::Layer && self.step_no == 0 && self.axis == axis {
+            let Some(slots) = out.get_mut(n..).and_then(|r| r.first_chunk_mut::<LAYER_EVENTS>()) else {
+                break;
+            };
+            n += self.write_layer(pos, slots, contour);
+        }
+        n
     }
 
     /// The events of one whole layer into `slots` (the header, then the moves that move);
