@@ -146,8 +146,10 @@ pub fn too_long(line: u32) -> Alarm {
 /// must be the N of exactly one of those blocks (else `BLOCK NOT FOUND` on P), and the first
 /// N(nf) at or after it must come within [`MAX_BLOCKS`] blocks (a 1 001st block without it:
 /// `CONTOUR TOO LONG` on Q) and before the G70 block (else `BLOCK NOT FOUND` on Q). Returns
-/// where the ns block stands. Work: one pass over the blocks before the G70 block.
-pub fn find_before(src: &[u8], origin: Mark, before: u64, ns: u64, nf: u64, line: u32) -> Result<Mark, Alarm> {
+/// where the ns block stands. Each block from N(ns) on, while N(nf) is not yet met and the
+/// count is within CNT.MAX + 1, is handed to `on_block` as it is read: G70 reads its contour in
+/// this same pass. Work: one pass over the blocks before the G70 block.
+pub fn find_before(src: &[u8], origin: Mark, before: u64, ns: u64, nf: u64, line: u32, mut on_block: impl FnMut(&Block)) -> Result<Mark, Alarm> {
     let mut reader = Blocks::resume(src, origin);
     let mut block = Block::new();
     let mut first: Option<Mark> = None;
@@ -166,6 +168,7 @@ pub fn find_before(src: &[u8], origin: Mark, before: u64, ns: u64, nf: u64, line
             first.get_or_insert(mark);
         }
         if first.is_some() && !closed && since <= MAX_BLOCKS {
+            on_block(&block);
             since += 1;
             closed = since <= MAX_BLOCKS && block.is_sequence(nf);
         }

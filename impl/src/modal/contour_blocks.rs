@@ -40,6 +40,33 @@ struct Reading {
     feed: u32,
 }
 
+/// A contour being read block by block (`Machine::collect`).
+struct Collect {
+    reading: Reading,
+    /// The first of the blocks' alarms, returned once the whole contour is found.
+    deferred: Option<Alarm>,
+    /// The ns block's motion code (CNT.FIRST).
+    first_motion: Option<u64>,
+    /// Blocks read.
+    count: usize,
+    /// An element found no room (`CONTOUR TOO LONG`; not reached within CNT.MAX).
+    overflow: bool,
+}
+
+impl Collect {
+    fn new(start: (i64, i64)) -> Collect {
+        Collect { reading: Reading { pos: start, mode: None, feed: 0 }, deferred: None, first_motion: None, count: 0, overflow: false }
+    }
+
+    /// The ns block's motion code, or the first block's alarm.
+    fn finish(self) -> Result<Option<u64>, Alarm> {
+        match self.deferred {
+            Some(a) => Err(a),
+            None => Ok(self.first_motion),
+        }
+    }
+}
+
 impl Machine {
     /// G70.FORMAT, G70.UW, G70.FEED: (4) the feed (COM.LEAD), P, Q (CNT.PQ); (5) the contour
     /// before the G70 block (CNT.FIND, CNT.MAX), each of its blocks' checks, CNT.FIRST; then the
@@ -54,9 +81,15 @@ impl Machine {
         // The G70 block is the last block the running program's reader read, counted from that
         // program's first block (the main program's, or the subprogram's O block).
         let before = prog.blocks.blocks_read().saturating_sub(1);
-        let at = contour::find_before(src, prog.origin, before, ns, nf, line)?;
-        let mut reader = Blocks::resume(src, at);
-        let first = self.read_contour(&mut reader, self.pos, ns, nf, false, line, prog.contour)?;
+        // The contour's blocks are read in the search's own pass (each block lexed once).
+        prog.contour.clear();
+        let mut collect = Collect::new(self.pos);
+        let contour = &mut *prog.contour;
+        contour::find_before(src, prog.origin, before, ns, nf, line, |block| self.collect(&mut collect, block, contour))?;
+        if collect.overflow {
+            return Err(contour::too_long(line));
+        }
+        let first = collect.finish()?;
         // CNT.FIRST on the ns block's line (element 0 is always the ns block).
         contour::check_first(first, prog.contour.get(0).line)?;
         let shift = (v.u.unwrap_or(0), v.w.unwrap_or(0));
@@ -134,43 +167,43 @@ impl Machine {
     ) -> Result<Option<u64>, Alarm> {
         contour.clear();
         let mut block = Block::new();
-        let mut reading = Reading { pos: start, mode: None, feed: 0 };
-        let mut deferred: Option<Alarm> = None;
-        let mut first_motion = None;
-        let mut count = 0usize;
+        let mut collect = Collect::new(start);
         loop {
             if !reader.read(&mut block)? {
-                return Err(contour::not_found(if count == 0 { b'P' } else { b'Q' }, line));
+                return Err(contour::not_found(if collect.count == 0 { b'P' } else { b'Q' }, line));
             }
-            count += 1;
-            if count == 1 && ahead && !block.is_sequence(ns) {
+            if collect.count == 0 && ahead && !block.is_sequence(ns) {
                 return Err(contour::not_found(b'P', line));
             }
-            if count > MAX_BLOCKS {
+            if collect.count >= MAX_BLOCKS {
                 return Err(contour::too_long(line));
             }
-            if count == 1 {
-                first_motion = block.g_codes().last().map(|g| g.mantissa);
-            }
-            if deferred.is_none() {
-                match self.contour_block(&block, &mut reading, count == 1) {
-                    Ok(Some(e)) => {
-                        // Within CNT.MAX the buffer has room: one element per block at most.
-                        if !contour.push(e) {
-                            return Err(contour::too_long(line));
-                        }
-                    }
-                    Ok(None) => {}
-                    Err(a) => deferred = Some(a),
-                }
+            self.collect(&mut collect, &block, contour);
+            if collect.overflow {
+                return Err(contour::too_long(line));
             }
             if block.is_sequence(nf) {
                 break;
             }
         }
-        match deferred {
-            Some(a) => Err(a),
-            None => Ok(first_motion),
+        collect.finish()
+    }
+
+    /// One block of the contour into `contour` (its checks, its element if it moves): the
+    /// first of the blocks' alarms is kept in `c` and later blocks only counted.
+    fn collect(&self, c: &mut Collect, block: &Block, contour: &mut Contour) {
+        c.count += 1;
+        let first = c.count == 1;
+        if first {
+            c.first_motion = block.g_codes().last().map(|g| g.mantissa);
+        }
+        if c.deferred.is_none() {
+            match self.contour_block(block, &mut c.reading, first) {
+                // Within CNT.MAX the buffer has room: one element per block at most.
+                Ok(Some(e)) => c.overflow |= !contour.push(e),
+                Ok(None) => {}
+                Err(a) => c.deferred = Some(a),
+            }
         }
     }
 

@@ -38,6 +38,9 @@ use cycle_vocab::{Alarm, AlarmCode, Rule};
 
 mod axis;
 mod run;
+mod step;
+
+use step::LineStep;
 
 pub use axis::Axis;
 
@@ -97,6 +100,11 @@ pub struct Roughing {
     cursor: usize,
     /// The current layer's cut end b_k.
     cut: i64,
+    /// The cut on the element after P_`line_j`, kept for layer `line_k` to step to the next
+    /// layer without a division (`step`); `line_j` = usize::MAX when none is kept.
+    line: LineStep,
+    line_j: usize,
+    line_k: u32,
 }
 
 fn sign(v: i64) -> i64 {
@@ -171,6 +179,9 @@ impl Roughing {
             step_no: 0,
             cursor: n - 1,
             cut: 0,
+            line: LineStep::default(),
+            line_j: usize::MAX,
+            line_k: 0,
         };
         let layers = cycle.count(contour, max_passes);
         if layers >= max_passes {
@@ -216,6 +227,40 @@ impl Roughing {
         let to = self.point(contour, j + 1);
         let centre = (e.cx.saturating_add(self.shift.0), e.cz.saturating_add(self.shift.1));
         cut_on(self.axis, e.kind, from, to, centre, self.layer_at(k))
+    }
+
+    /// The current layer's cut end, `cut_at(cursor, k)`: on a line element stepped from the
+    /// previous layer's when the sweep stayed on that element (`step`, exact), else computed.
+    #[inline(always)]
+    fn layer_cut(&mut self, contour: &Contour) -> i64 {
+        if self.line_j == self.cursor && self.line_k.wrapping_add(1) == self.k {
+            self.line.advance();
+            self.line_k = self.k;
+            return sat(self.line.value());
+        }
+        self.new_layer_cut(contour)
+    }
+
+    /// `layer_cut` when the sweep reached a new element (or an arc): the cut computed, and on a
+    /// line the stepping state set up for the next layers.
+    #[inline(never)]
+    fn new_layer_cut(&mut self, contour: &Contour) -> i64 {
+        let (j, k) = (self.cursor, self.k);
+        self.line_j = usize::MAX;
+        if j + 1 < self.n && !matches!(contour.get(j + 1).kind, Kind::Arc(_)) {
+            let (from, to) = (self.point(contour, j), self.point(contour, j + 1));
+            let (a0, b0) = (i128::from(self.axis.a(from)), i128::from(self.axis.b(from)));
+            let (a1, b1) = (i128::from(self.axis.a(to)), i128::from(self.axis.b(to)));
+            let (den, db) = (a1 - a0, b1 - b0);
+            let num = b0 * den + (i128::from(self.layer_at(k)) - a0) * db;
+            if let Some(line) = LineStep::new(num, den, i128::from(self.s) * i128::from(self.step) * db) {
+                self.line = line;
+                self.line_j = j;
+                self.line_k = k;
+                return sat(line.value());
+            }
+        }
+        self.cut_at(contour, j, k)
     }
 
     /// Whether layer k's cut is positive, c·(b_k − A.b) > 0.

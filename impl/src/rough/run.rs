@@ -1,7 +1,7 @@
 //! The run of a G71/G72 cycle, one event at a time: the layers (G71.LAYER, G71.RETRACT), the
 //! semi-finish pass along the translated contour (G71.LASTPASS) and the return (G71.RETURN).
 
-use super::{Phase, Roughing};
+use super::{Axis, Phase, Roughing};
 use crate::contour::{Contour, Element, Kind};
 use crate::emit::emit;
 use crate::fixed::sat;
@@ -42,7 +42,11 @@ impl Roughing {
     /// it is kept, else one event at a time. Returns how many were written and whether the
     /// cycle is done.
     pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event], contour: &Contour) -> (usize, bool) {
-        let mut n = 0;
+        // The whole layers first, one loop per axis (the axis then a constant in each).
+        let mut n = match self.axis {
+            Axis::G71 => self.write_layers(Axis::G71, pos, out, contour),
+            Axis::G72 => self.write_layers(Axis::G72, pos, out, contour),
+        };
         loop {
             if self.phase == Phase::Layer && self.step_no == 0 {
                 if let Some(slots) = out.get_mut(n..).and_then(|r| r.first_chunk_mut::<LAYER_EVENTS>()) {
@@ -63,61 +67,101 @@ impl Roughing {
         }
     }
 
-    /// The events of one whole layer into `slots` (the header, then the moves that move);
-    /// returns how many.
+    /// Whole layers into `out` while one fits, `self.axis` being `axis`; returns how many
+    /// events were written.
     #[inline(always)]
-    fn write_layer(&mut self, pos: &mut (i64, i64), slots: &mut [Event; LAYER_EVENTS], contour: &Contour) -> usize {
+    fn write_layers(&mut self, axis: Axis, pos: &mut (i64, i64), out: &mut [Event], contour: &Contour) -> usize {
         let mut n = 0;
-        for _ in 0..LAYER_EVENTS {
-            let e = match self.layer_step(contour) {
-                Some(Event::Move(m)) => emit(m, pos),
-                other => other,
+        while self.phase == Phase::Layer && self.step_no == 0 && self.axis == axis {
+            let Some(slots) = out.get_mut(n..).and_then(|r| r.first_chunk_mut::<LAYER_EVENTS>()) else {
+                break;
             };
-            if let (Some(e), Some(slot)) = (e, slots.get_mut(n)) {
-                *slot = e;
-                n += 1;
-            }
+            n += self.write_layer(pos, slots, contour);
         }
         n
     }
 
-    /// One step of the current layer: ① infeed along a to a_k in the ns block's mode, ② the cut
-    /// at feed to b_k (G71.LAYER), ③ the 45° retract at feed, ④ the rapid back to A.b
-    /// (G71.RETRACT); the pass header first.
+    /// The events of one whole layer into `slots` (the header, then the moves that move);
+    /// returns how many. The same events as five `layer_step`s, built in place: the header,
+    /// then the four moves, each kept only when it moves (PRJ.NOOP).
+    #[inline(always)]
+    fn write_layer(&mut self, pos: &mut (i64, i64), slots: &mut [Event; LAYER_EVENTS], contour: &Contour) -> usize {
+        let [first, rest @ ..] = slots;
+        *first = Event::Pass(self.layer_header(contour));
+        let ak = self.layer_at(self.k);
+        let mut n = 0;
+        for i in 1..=4u8 {
+            let m = self.layer_move(i, ak);
+            if (m.x, m.z) != *pos {
+                *pos = (m.x, m.z);
+                if let Some(slot) = rest.get_mut(n) {
+                    *slot = Event::Move(m);
+                }
+                n += 1;
+            }
+        }
+        self.next_layer();
+        n + 1
+    }
+
+    /// One step of the current layer: the pass header (`layer_header`), then its four moves
+    /// (`layer_move`).
     #[inline(always)]
     fn layer_step(&mut self, contour: &Contour) -> Option<Event> {
-        let rules = self.axis.rules();
-        let ak = self.layer_at(self.k);
-        let b0 = self.axis.b(self.start);
         let step = self.step_no;
         self.step_no += 1;
+        if step == 0 {
+            return Some(Event::Pass(self.layer_header(contour)));
+        }
+        let m = self.layer_move(step, self.layer_at(self.k));
+        if step >= 4 {
+            self.next_layer();
+        }
+        Some(Event::Move(m))
+    }
+
+    /// The current layer's header, after the sweep: the cursor moves toward Q₀ while its point
+    /// lies beyond the layer, and the layer's cut end b_k is found (G71.LAYER).
+    #[inline(always)]
+    fn layer_header(&mut self, contour: &Contour) -> Pass {
+        let need = i128::from(self.k) * i128::from(self.step);
+        while self.cursor > 0 && self.reach(self.point(contour, self.cursor)) < need {
+            self.cursor -= 1;
+        }
+        self.cut = self.layer_cut(contour);
+        let diameter_depth = i64::from(self.k).saturating_mul(self.depth).saturating_mul(2);
+        Pass { index: self.k, kind: PassKind::Rough, diameter_depth, rule: self.axis.rules().layer }
+    }
+
+    /// Move `step` (1–4) of the current layer: ① infeed along a to a_k in the ns block's mode,
+    /// ② the cut at feed to b_k (G71.LAYER), ③ the 45° retract at feed, ④ the rapid back to A.b
+    /// (G71.RETRACT); `ak` = a_k, `layer_at(k)`.
+    #[inline(always)]
+    fn layer_move(&self, step: u8, ak: i64) -> Move {
+        let rules = self.axis.rules();
+        let b0 = self.axis.b(self.start);
         match step {
-            0 => {
-                // The sweep: move the cursor toward Q₀ while its point lies beyond the layer.
-                let need = i128::from(self.k) * i128::from(self.step);
-                while self.cursor > 0 && self.reach(self.point(contour, self.cursor)) < need {
-                    self.cursor -= 1;
-                }
-                self.cut = self.cut_at(contour, self.cursor, self.k);
-                let diameter_depth = i64::from(self.k).saturating_mul(self.depth).saturating_mul(2);
-                Some(Event::Pass(Pass { index: self.k, kind: PassKind::Rough, diameter_depth, rule: rules.layer }))
-            }
-            1 => Some(Event::Move(self.linear(self.rapid_infeed, self.axis.point(ak, b0), rules.layer))),
-            2 => Some(Event::Move(self.linear(false, self.axis.point(ak, self.cut), rules.layer))),
+            1 => self.linear(self.rapid_infeed, self.axis.point(ak, b0), rules.layer),
+            2 => self.linear(false, self.axis.point(ak, self.cut), rules.layer),
             3 => {
                 let p = self.axis.point(ak.saturating_add(self.retract.0), self.cut.saturating_add(self.retract.1));
-                Some(Event::Move(self.linear(false, p, rules.retract)))
+                self.linear(false, p, rules.retract)
             }
             _ => {
-                self.step_no = 0;
-                if self.k >= self.layers {
-                    self.phase = Phase::Semi;
-                } else {
-                    self.k += 1;
-                }
                 let p = self.axis.point(ak.saturating_add(self.retract.0), b0);
-                Some(Event::Move(Move::rapid(p.0, p.1, rules.retract)))
+                Move::rapid(p.0, p.1, rules.retract)
             }
+        }
+    }
+
+    /// After a layer's last move: the next layer, or the semi-finish pass after layer K.
+    #[inline(always)]
+    fn next_layer(&mut self) {
+        self.step_no = 0;
+        if self.k >= self.layers {
+            self.phase = Phase::Semi;
+        } else {
+            self.k += 1;
         }
     }
 
