@@ -60,3 +60,38 @@ pub(crate) fn fill<const N: usize, C: Batch<N>>(c: &mut C, pos: &mut (i64, i64),
     }
     (n, false)
 }
+
+/// A cycle whose bulk (a run of like events: pecks and their returns) a loop of its own writes
+/// in place, every other event through `next_event`.
+pub(crate) trait Bulk {
+    /// The cycle's one-event state machine.
+    fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event>;
+    /// The cycle is in its bulk.
+    fn in_bulk(&self) -> bool;
+    /// Writes as much of the bulk as fits into `out` (its events as `next_event` would give
+    /// them); returns how many were written.
+    fn write_bulk(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> usize;
+}
+
+/// Writes the next events of `c` into `out`: its bulk through [`Bulk::write_bulk`], every
+/// other event through `next_event`. Returns how many were written and whether the cycle is
+/// done. Bounded work: `out.len()` events.
+#[inline]
+pub(crate) fn fill_bulk<C: Bulk>(c: &mut C, pos: &mut (i64, i64), out: &mut [Event]) -> (usize, bool) {
+    let mut n = 0;
+    loop {
+        if c.in_bulk() {
+            n += c.write_bulk(pos, out.get_mut(n..).unwrap_or_default());
+        }
+        let Some(slot) = out.get_mut(n) else {
+            return (n, false);
+        };
+        match c.next_event(pos) {
+            Some(e) => {
+                *slot = e;
+                n += 1;
+            }
+            None => return (n, true),
+        }
+    }
+}

@@ -13,6 +13,7 @@
 //! unsigned difference); products of counts are taken in `u128`. Saturating operations only keep
 //! an impossible overflow from panicking. State: O(1) — the column and peck being cut.
 
+use crate::batch;
 use crate::emit::emit;
 use cycle_vocab::{Alarm, AlarmCode, Event, Move, Pass, PassKind, Rule};
 
@@ -259,22 +260,7 @@ impl Cycle {
     /// time, every other event through `next_event`. How many, and whether the cycle is done.
     /// Bounded work: `out.len()` events.
     pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> (usize, bool) {
-        let mut n = 0;
-        loop {
-            if self.phase == Phase::Peck && self.peck_i < self.pecks {
-                n += self.write_pecks(pos, out.get_mut(n..).unwrap_or_default());
-            }
-            let Some(slot) = out.get_mut(n) else {
-                return (n, false);
-            };
-            match self.next_event(pos) {
-                Some(e) => {
-                    *slot = e;
-                    n += 1;
-                }
-                None => return (n, true),
-            }
-        }
+        batch::fill_bulk(self, pos, out)
     }
 
     /// The pecks before the column's last and their returns, while two events fit: as
@@ -306,6 +292,18 @@ impl Cycle {
         }
         *pos = at;
         n
+    }
+}
+
+impl batch::Bulk for Cycle {
+    fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
+        Cycle::next_event(self, pos)
+    }
+    fn in_bulk(&self) -> bool {
+        self.phase == Phase::Peck && self.peck_i < self.pecks
+    }
+    fn write_bulk(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> usize {
+        self.write_pecks(pos, out)
     }
 }
 

@@ -8,6 +8,7 @@
 //! Bounds: Z, W, R, Q ≤ N < 2^30 and positions below 2^62 (lib.rs); a peck's offset is at most
 //! the depth. State: O(1) — the peck being cut.
 
+use crate::batch;
 use crate::emit::emit;
 use cycle_vocab::{Alarm, AlarmCode, Dwell, Event, Move, Pass, PassKind, Rule};
 
@@ -162,22 +163,7 @@ impl Cycle {
     /// place three at a time, every other event through `next_event`. How many, and whether the
     /// cycle is done. Bounded work: `out.len()` events.
     pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> (usize, bool) {
-        let mut n = 0;
-        loop {
-            if self.phase == Phase::Peck && self.peck_k < self.pecks {
-                n += self.write_pecks(pos, out.get_mut(n..).unwrap_or_default());
-            }
-            let Some(slot) = out.get_mut(n) else {
-                return (n, false);
-            };
-            match self.next_event(pos) {
-                Some(e) => {
-                    *slot = e;
-                    n += 1;
-                }
-                None => return (n, true),
-            }
-        }
+        batch::fill_bulk(self, pos, out)
     }
 
     /// The pecks before the last, each with its rapid up to the R level and down to the depth
@@ -203,6 +189,18 @@ impl Cycle {
         }
         *pos = at;
         n
+    }
+}
+
+impl batch::Bulk for Cycle {
+    fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
+        Cycle::next_event(self, pos)
+    }
+    fn in_bulk(&self) -> bool {
+        self.phase == Phase::Peck && self.peck_k < self.pecks
+    }
+    fn write_bulk(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> usize {
+        self.write_pecks(pos, out)
     }
 }
 
