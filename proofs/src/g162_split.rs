@@ -296,7 +296,7 @@ pub mod stubs {
         D.store(d, SeqCst);
     }
 
-    /// `cycle_impl::g162::norm` for the recorded P and Q: (P, Q, k, D).
+    /// `cycle_impl::g162::split::norm` for the recorded P and Q: (P, Q, k, D).
     pub fn norm_spec(sp: &SplitParams) -> Norm {
         let p = sp.depth.max(1).unsigned_abs();
         let q = sp.allowance.max(1).unsigned_abs();
@@ -329,7 +329,7 @@ cycle_harness::property! {
         body: |src, scope| tail_body(src, &scope),
         /// The Kani harness that was run (Kissat; also tried with CaDiCaL): no verdict, so a TEST, a
         /// proof harness only with `kani-attempts` (`-Z stubbing`).
-        kani: test(TAIL_KANI) { unwind: 6, solver: kissat, stubs: [cycle_impl::g162::norm => stubs::norm_spec], why: "no verdict: CaDiCaL, 10 min of CBMC (1.25 M variables, 5.13 M clauses; eleven queries answered, the twelfth open for 7 min; 1.97 GB), stopped by hand; Kissat 4.0.1, 900 s (eight queries answered at 30–70 s each, the ninth open for 9 min; CBMC 1.23 GB by `ps`)" },
+        kani: test(TAIL_KANI) { unwind: 6, solver: kissat, stubs: [cycle_impl::g162::split::norm => stubs::norm_spec], why: "no verdict: CaDiCaL, 10 min of CBMC (1.25 M variables, 5.13 M clauses; eleven queries answered, the twelfth open for 7 min; 1.97 GB), stopped by hand; Kissat 4.0.1, 900 s (eight queries answered at 30–70 s each, the ninth open for 9 min; CBMC 1.23 GB by `ps`)" },
         tests {
             /// `g162_split_tail`'s body: P, Q ≤ 40 (k ≤ 40 / Q); each draw its 6 smallest and largest values.
             fn g162_split_tail_exhaustive = exhaustive(6, 2_000_000) on TailScope { max_len: 40, k_below_quotient: true };
