@@ -28,6 +28,7 @@ pub mod mutation;
 pub mod expander_envelope;
 pub mod g92_pullout;
 pub mod g162_split;
+pub mod g162_split_target;
 pub mod g162_pitch;
 pub mod g90_envelope;
 pub mod peck_counts;
@@ -52,6 +53,7 @@ pub const PROPERTIES: &[Property] = &[
     schedule_new_shape::PROPERTY,
     depth_step::PROPERTY,
     g162_split::TAIL,
+    g162_split_target::PROPERTY,
     peck_counts::PROPERTY,
     g71_layers::PROPERTY,
     depth_step_monotone::PROPERTY,

@@ -150,7 +150,7 @@ cycle_harness::property! {
         /// The Kani harness that was run: still in symbolic execution after 720 s, so a TEST, a proof
         /// harness only with `kani-attempts`. Unwind 24: the event loop runs at most 2·(2·3 + 4) + 2 = 22
         /// times; `next_event` skips at most six phases per event.
-        kani: test(KANI) { unwind: 24, why: "no verdict: Kani 0.61.0 / CBMC 6.4.0 (CaDiCaL), scope `KANI` (≤ 3 pecks × 2 columns, positions and lengths ±2^40), unwind 24 — still in symbolic execution at the 720 s timeout" },
+        kani: test(KANI) { unwind: 24, why: "no verdict: Kani 0.61.0 / CBMC 6.4.0 (CaDiCaL), scope `KANI` (≤ 3 pecks × 2 columns, positions and lengths ±2^40), unwind 24 — still in symbolic execution at the 720 s timeout; a narrower trial (KANI edited to ≤ 2 pecks × 1 column, unwind 11; CaDiCaL 1.5.3): symbolic execution 550 s (2.7 M steps, 12 888 VCCs left), then CBMC out of memory converting to SAT (23.6 GB, killed by the kernel at 10 min 35 s wall, load 4–6) — the unwind bound also unrolls `next_event`'s inner loop in every call, and the per-peck functions (`nth`, `ceil_div`) are private to impl, so no lemma over them can be stated from this crate" },
         tests {
             /// Positions in ±2 and lengths in 0…2: every combination of both codes (600 000 cases) —
             /// every refusal, ties of the last peck and the last column, e and relief of every size

@@ -202,7 +202,7 @@ cycle_harness::property! {
         body: |src, scope| body(src, &scope),
         /// Kani: the count against the step over the legal words, every pass number and limit.
         /// Unwind 10: the only loops are over the eight and four assumptions.
-        kani: proof(FULL) { unwind: 10, stubs: [cycle_impl::schedule::root_depth => crate::schedule_parts::stubs::root_depth_spec, cycle_impl::schedule::constant_depth => crate::schedule_parts::stubs::constant_depth_spec, cycle_impl::schedule::switch_depth => stubs::switch_depth_spec, cycle_impl::schedule::min_cuts => stubs::min_cuts_spec], measured: "SUCCESSFUL (878 checks, 1 unreachable; 4/4 covers), 9.0 s, 0.46 GB" },
+        kani: proof(FULL) { unwind: 10, stubs: [cycle_impl::schedule::root_depth => crate::schedule_parts::stubs::root_depth_spec, cycle_impl::schedule::constant_depth => crate::schedule_parts::stubs::constant_depth_spec, cycle_impl::schedule::switch_depth => stubs::switch_depth_spec, cycle_impl::schedule::min_cuts => stubs::min_cuts_spec], measured: "SUCCESSFUL (878 checks, 1 unreachable; 4/4 covers), 13.0 s, 0.48 GB" },
         tests {
             /// Δd, Δdmin, T ≤ 6 whole, pass numbers ≤ 40 and limits their 3 smallest and largest.
             fn schedule_count_exhaustive_small = exhaustive(3, 2_000_000) on Scope { max_len: 6, max_n: 40 };

@@ -58,7 +58,7 @@ cycle_harness::property! {
         /// else any s ≥ 1: lemma 07's s is ⌊a²/c²⌋ + 2 ≥ 2 or 1, the search's at least 1), the reach
         /// quotient T(T − 1)/Δd² + 1 real. Kissat: with CaDiCaL the fifth query was still open after
         /// 600 s (proofs/README.md); Kissat decides it in about 590 s. No loop: unwind 3 bounds nothing.
-        kani: proof(FULL) { unwind: 3, solver: kissat, stubs: [cycle_impl::schedule::switch_pass => stubs::switch_pass_spec], measured: "SUCCESSFUL (270 checks; 2/2 covers), 588.2 s, 0.22 GB" },
+        kani: proof(FULL) { unwind: 3, solver: kissat, stubs: [cycle_impl::schedule::switch_pass => stubs::switch_pass_spec], measured: "SUCCESSFUL (270 checks; 2/2 covers), 350.0 s, 0.26 GB" },
         tests {
             /// Δd, Δdmin, T their 12 smallest and largest legal values, both modes.
             fn schedule_new_shape_exhaustive = exhaustive(12, 2_000_000) on FULL;

@@ -148,7 +148,7 @@ cycle_harness::property! {
         body: |src, scope| body(src, &scope),
         /// Kani: the step over the legal words and every pass number, on a symbolic schedule. Unwind
         /// 10: the only loop is over `spec`'s eight assumptions.
-        kani: proof(FULL) { unwind: 10, stubs: [cycle_impl::schedule::root_depth => crate::schedule_parts::stubs::root_depth_spec, cycle_impl::schedule::constant_depth => crate::schedule_parts::stubs::constant_depth_spec], measured: "SUCCESSFUL (684 checks, 2 unreachable; 5/5 covers), 12.9 s, 0.41 GB" },
+        kani: proof(FULL) { unwind: 10, stubs: [cycle_impl::schedule::root_depth => crate::schedule_parts::stubs::root_depth_spec, cycle_impl::schedule::constant_depth => crate::schedule_parts::stubs::constant_depth_spec], measured: "SUCCESSFUL (684 checks, 2 unreachable; 5/5 covers), 12.2 s, 0.41 GB" },
         tests {
             /// Δd, Δdmin, T ≤ 6 whole, pass numbers ≤ 40 and depths their 4 smallest and largest.
             fn schedule_step_exhaustive_small = exhaustive(4, 2_000_000) on Scope { max_len: 6, max_n: 40 };
