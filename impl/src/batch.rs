@@ -6,6 +6,43 @@
 
 use cycle_vocab::Event;
 
+/// The events of one unit, each written in place into the next of the caller's slots; an event
+/// past the last slot is not written (the units' sizes are their most events).
+pub(crate) struct Unit<'a> {
+    slots: &'a mut [Event],
+    n: usize,
+}
+
+impl<'a> Unit<'a> {
+    #[inline(always)]
+    pub(crate) fn new(slots: &'a mut [Event]) -> Self {
+        Unit { slots, n: 0 }
+    }
+
+    /// Writes `e` into the next slot.
+    #[inline(always)]
+    pub(crate) fn put(&mut self, e: Event) {
+        if let Some(slot) = self.slots.get_mut(self.n) {
+            *slot = e;
+            self.n += 1;
+        }
+    }
+
+    /// Writes `e` if there is one (a move that does not move is none: PRJ.NOOP).
+    #[inline(always)]
+    pub(crate) fn put_some(&mut self, e: Option<Event>) {
+        if let Some(e) = e {
+            self.put(e);
+        }
+    }
+
+    /// How many events were written.
+    #[inline(always)]
+    pub(crate) fn written(&self) -> usize {
+        self.n
+    }
+}
+
 /// A cycle that writes its events in units of at most `N` events.
 pub(crate) trait Batch<const N: usize> {
     /// The cycle's one-event state machine.

@@ -3,6 +3,7 @@
 //! position (PRJ.NOOP). No buffering: each move is computed from the pass geometry and a step
 //! counter.
 
+use crate::batch::Unit;
 use crate::fixed::start_angle;
 use crate::passes::{Cut, Multi};
 use crate::pullout::{z_long, Offsets};
@@ -240,23 +241,15 @@ impl Cycle {
     /// how many were written. The steps are unrolled, so each event is built in place.
     #[inline(always)]
     fn write_start(&mut self, pos: &mut (i64, i64), slots: &mut [Event; START_EVENTS]) -> usize {
-        let mut n = 0;
-        let mut put = |e: Event| {
-            if let Some(slot) = slots.get_mut(n) {
-                *slot = e;
-                n += 1;
-            }
-        };
+        let mut unit = Unit::new(slots);
         if let Some(h) = self.take_header() {
-            put(h);
+            unit.put(h);
         }
         for step in 0..STEPS {
-            if let Some(e) = self.move_at(step).and_then(|m| emit(m, pos)) {
-                put(e);
-            }
+            unit.put_some(self.move_at(step).and_then(|m| emit(m, pos)));
         }
         self.step = STEPS;
-        n
+        unit.written()
     }
 }
 

@@ -4,7 +4,7 @@
 //! the bottom, the dwell P, the spindle reversed, the thread move back to the R level at the same
 //! lead, the spindle forward, a rapid to the initial level. Eight events at most; O(1) state.
 
-use crate::batch::{self, Batch};
+use crate::batch::{self, Batch, Unit};
 use crate::emit::emit;
 use crate::fixed::div_round;
 use crate::g83::{Levels, Words};
@@ -87,33 +87,19 @@ impl Batch<TAP_EVENTS> for Cycle {
     fn write_unit(&mut self, pos: &mut (i64, i64), slots: &mut [Event; TAP_EVENTS]) -> usize {
         let rule = Rule::G84Path;
         let lv = self.lv;
-        let mut n = 0;
-        let mut put = |e: Event| {
-            if let Some(slot) = slots.get_mut(n) {
-                *slot = e;
-                n += 1;
-            }
-        };
-        put(lv.header(rule));
-        if let Some(e) = emit(Move::rapid(lv.x, lv.r_level, rule), pos) {
-            put(e);
-        }
-        if let Some(e) = emit(Move::thread(lv.x, lv.bottom, self.lead, 0, rule), pos) {
-            put(e);
-        }
+        let mut unit = Unit::new(slots);
+        unit.put(lv.header(rule));
+        unit.put_some(emit(Move::rapid(lv.x, lv.r_level, rule), pos));
+        unit.put_some(emit(Move::thread(lv.x, lv.bottom, self.lead, 0, rule), pos));
         if self.dwell > 0 {
-            put(Event::Dwell(Dwell { ms: self.dwell, rule }));
+            unit.put(Event::Dwell(Dwell { ms: self.dwell, rule }));
         }
-        put(Event::Spindle(Spindle { state: SpindleState::Reverse, rule }));
-        if let Some(e) = emit(Move::thread(lv.x, lv.r_level, self.lead, 0, rule), pos) {
-            put(e);
-        }
-        put(Event::Spindle(Spindle { state: SpindleState::Forward, rule }));
-        if let Some(e) = emit(Move::rapid(lv.x, lv.initial, rule), pos) {
-            put(e);
-        }
+        unit.put(Event::Spindle(Spindle { state: SpindleState::Reverse, rule }));
+        unit.put_some(emit(Move::thread(lv.x, lv.r_level, self.lead, 0, rule), pos));
+        unit.put(Event::Spindle(Spindle { state: SpindleState::Forward, rule }));
+        unit.put_some(emit(Move::rapid(lv.x, lv.initial, rule), pos));
         self.step = TAP_EVENTS as u8;
-        n
+        unit.written()
     }
 }
 

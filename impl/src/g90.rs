@@ -7,7 +7,7 @@
 //! difference below is exact in `i64`; saturating operations only keep an impossible overflow
 //! from panicking.
 
-use crate::batch::{self, Batch};
+use crate::batch::{self, Batch, Unit};
 use crate::emit::emit;
 use cycle_vocab::{Alarm, AlarmCode, Event, Move, Pass, PassKind, Rule};
 
@@ -191,23 +191,15 @@ impl Batch<CUT_EVENTS> for Cycle {
     /// The header and the four moves, unrolled, each event built in place.
     #[inline(always)]
     fn write_unit(&mut self, pos: &mut (i64, i64), slots: &mut [Event; CUT_EVENTS]) -> usize {
-        let mut n = 0;
-        let mut put = |e: Event| {
-            if let Some(slot) = slots.get_mut(n) {
-                *slot = e;
-                n += 1;
-            }
-        };
+        let mut unit = Unit::new(slots);
         if let Some(h) = self.header.take() {
-            put(Event::Pass(h));
+            unit.put(Event::Pass(h));
         }
         for step in 0..STEPS {
-            if let Some(e) = self.move_at(step).and_then(|m| emit(m, pos)) {
-                put(e);
-            }
+            unit.put_some(self.move_at(step).and_then(|m| emit(m, pos)));
         }
         self.step = STEPS;
-        n
+        unit.written()
     }
 }
 

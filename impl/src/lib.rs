@@ -14,7 +14,7 @@
 //! 1. Foundations: [`fixed`] (exact integer helpers, the tangent table), [`number`] (numbers as
 //!    written, scaled exactly), [`lex`] (the program lexer), `words` (word values and ranges),
 //!    [`config`] (parameters, the configuration and script checks), [`family`] (the cycle
-//!    families' G codes).
+//!    families' G codes), `batch` (the batch path's units written in place).
 //! 2. Geometry and plans: [`schedule`] (rough-pass depths), [`pullout`], [`arc`] (G02/G03),
 //!    [`contour`] (the contour buffer), `passes` (a G76/G78 pass and the pass plan), `emit` (a
 //!    move as an event, PRJ.NOOP; the per-pass move state machine of G92/G76/G78).

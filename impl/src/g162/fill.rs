@@ -2,7 +2,7 @@
 //! straight into the caller's buffer ([`batch::fill`]).
 
 use super::{Cycle, STEPS};
-use crate::batch::{self, Batch};
+use crate::batch::{self, Batch, Unit};
 use crate::emit::emit;
 use cycle_vocab::Event;
 
@@ -34,24 +34,16 @@ impl Batch<PASS_EVENTS> for Cycle {
     /// The pass's header and moves, unrolled, each event built in place.
     #[inline(always)]
     fn write_unit(&mut self, pos: &mut (i64, i64), slots: &mut [Event; PASS_EVENTS]) -> usize {
-        let mut n = 0;
-        let mut put = |e: Event| {
-            if let Some(slot) = slots.get_mut(n) {
-                *slot = e;
-                n += 1;
-            }
-        };
+        let mut unit = Unit::new(slots);
         if self.header {
             self.header = false;
-            put(Event::Pass(self.pass_header()));
+            unit.put(Event::Pass(self.pass_header()));
         }
         for step in 0..STEPS {
-            if let Some(e) = self.move_at(step).and_then(|m| emit(m, pos)) {
-                put(e);
-            }
+            unit.put_some(self.move_at(step).and_then(|m| emit(m, pos)));
         }
         self.step = STEPS;
-        n
+        unit.written()
     }
 }
 
