@@ -4,6 +4,7 @@
 
 use crate::config;
 use crate::contour::Contour;
+use crate::emit::emit;
 use crate::lex::{Block, Blocks};
 use crate::modal::{Machine, Program};
 use crate::run::Run;
@@ -77,17 +78,13 @@ impl<'a> Core<'a> {
                 }
                 continue;
             }
-            match self.fill_slow() {
-                None => break,
-                Some(Ok(None)) => {}
-                Some(Ok(Some(e))) => {
-                    if let Some(slot) = rest.first_mut() {
-                        *slot = e;
-                        n += 1;
-                    }
-                }
-                Some(Err(a)) if n == 0 => return Err(a),
-                Some(Err(a)) => {
+            let (written, next) = self.fill_slow(rest);
+            n += written;
+            match next {
+                Ok(true) => {}
+                Ok(false) => break,
+                Err(a) if n == 0 => return Err(a),
+                Err(a) => {
                     self.pending = Some(a);
                     break;
                 }
@@ -127,20 +124,69 @@ impl Core<'_> {
         }
     }
 
-    /// [`crate::Expander::fill`] with nothing running: the next block is read without taking an event
-    /// from it (`Ok(None)`), so that what it runs writes its own events; before the first block,
-    /// after the end or an alarm, as [`Core::next_slow`].
+    /// [`crate::Expander::fill`] with nothing running, `out` not empty: blocks are read
+    /// ([`Core::fill_blocks`]) so that what they run writes its own events; before the first
+    /// block, after the end or an alarm, as [`Core::next_slow`]. Returns how many events were
+    /// written into `out` and whether the stream goes on (`Ok(false)`: it is over; `Err`: its
+    /// alarm, the stream failed).
     #[inline(never)]
-    fn fill_slow(&mut self) -> Option<Result<Option<Event>, Alarm>> {
+    fn fill_slow(&mut self, out: &mut [Event]) -> (usize, Result<bool, Alarm>) {
         let steady = self.checked && !self.done && self.pending.is_none();
         if steady && matches!(self.run, Run::Idle) {
-            return match self.read_block() {
-                Ok(true) => Some(Ok(None)),
-                Ok(false) => None,
-                Err(a) => self.fail(a).map(|r| r.map(Some)),
-            };
+            return self.fill_blocks(out);
         }
-        self.next_slow().map(|r| r.map(Some))
+        match self.next_slow() {
+            None => (0, Ok(false)),
+            Some(Ok(e)) => match out.first_mut() {
+                Some(slot) => {
+                    *slot = e;
+                    (1, Ok(true))
+                }
+                None => (0, Ok(true)),
+            },
+            Some(Err(a)) => (0, Err(a)),
+        }
+    }
+
+    /// Reads blocks with nothing running: each plain block of a G00/G01/G32/G33/G34 mode
+    /// (`modal::Plain`) writes its move straight into the next slot of `out` (none for a move
+    /// to where the machine stands, PRJ.NOOP), until `out` is full or another block is read
+    /// (what it runs, if anything, is left in `run`). Returns as [`Core::fill_slow`]. Bounded
+    /// work: a block per iteration, at most `out.len()` events.
+    fn fill_blocks(&mut self, out: &mut [Event]) -> (usize, Result<bool, Alarm>) {
+        let mut n = 0;
+        while let Some(slot) = out.get_mut(n) {
+            match self.lex() {
+                Ok(true) => {}
+                Ok(false) => return (n, Ok(false)),
+                Err(a) => return (n, self.fail_with(a)),
+            }
+            let plain = self.machine.plain(&self.block).filter(|p| p.is_move());
+            let Some(plain) = plain else {
+                return match self.interpret() {
+                    Ok(()) => (n, Ok(true)),
+                    Err(a) => (n, self.fail_with(a)),
+                };
+            };
+            match self.machine.plain_move(plain, &self.block) {
+                Ok(Some(m)) => {
+                    if let Some(e) = emit(m, &mut self.machine.pos) {
+                        *slot = e;
+                        n += 1;
+                    }
+                }
+                Ok(None) => {}
+                Err(a) => return (n, self.fail_with(a)),
+            }
+        }
+        (n, Ok(true))
+    }
+
+    /// Ends the stream with `alarm` ([`Core::fail`]) and returns it.
+    fn fail_with(&mut self, alarm: Alarm) -> Result<bool, Alarm> {
+        self.done = true;
+        self.run = Run::Idle;
+        Err(alarm)
     }
 
     /// The configuration check before the first block, then the script's (OP.SCRIPT, after the
@@ -155,6 +201,17 @@ impl Core<'_> {
     /// alarm is for the caller to [`fail`](Core::fail) with. An M98 or M99 block moves the
     /// reader to the subprogram or back ([`sub::Calls`]) and runs nothing: no event.
     pub(crate) fn read_block(&mut self) -> Result<bool, Alarm> {
+        if !self.lex()? {
+            return Ok(false);
+        }
+        self.interpret()?;
+        Ok(true)
+    }
+
+    /// The lexer's part of [`Core::read_block`]: the next block into `block`; `false` when the
+    /// program is over.
+    #[inline(always)]
+    fn lex(&mut self) -> Result<bool, Alarm> {
         if self.ended {
             self.done = true;
             return Ok(false);
@@ -165,6 +222,11 @@ impl Core<'_> {
             self.done = true;
             return Ok(false);
         }
+        Ok(true)
+    }
+
+    /// The interpreter's part of [`Core::read_block`]: the block read into what it runs.
+    fn interpret(&mut self) -> Result<(), Alarm> {
         let mut program = Program {
             blocks: &mut self.blocks,
             contour: &mut self.contour,
@@ -177,6 +239,6 @@ impl Core<'_> {
             sub::Flow::Call(c) => self.calls.call(c, &mut self.blocks, self.machine.params.max_passes)?,
             sub::Flow::Return => self.calls.ret(&mut self.blocks),
         }
-        Ok(true)
+        Ok(())
     }
 }

@@ -25,6 +25,7 @@ mod contour_blocks;
 mod cycles;
 mod flow;
 mod kind;
+mod plain;
 mod values;
 
 /// What the block interpreter may read besides the block: the running program's reader (a
@@ -178,6 +179,16 @@ impl Machine {
     /// (M02, M30), a subprogram call (M98) or return (M99).
     pub fn block(&mut self, b: &Block, run: &mut Run, prog: &mut Program<'_, '_>) -> Result<Flow, Alarm> {
         *run = Run::Idle;
+        // A plain block (no G code, only N U W X Z) under a modal move or cycle: the same checks
+        // and result, without the steps that cannot apply to it (`plain`).
+        if let Some(plain) = self.plain(b) {
+            if plain.is_move() {
+                *run = self.plain_move(plain, b)?.map_or(Run::Idle, Run::Move);
+            } else {
+                self.plain_cycle(plain, b, run)?;
+            }
+            return Ok(Flow::Next);
+        }
         let line = b.line;
         let at = |letter: u8| At { letter, line };
         let Codes { motion, family, end, absinc, g80, g96, sub } = self.codes(b, prog.in_subprogram)?;
