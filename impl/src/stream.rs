@@ -148,29 +148,47 @@ impl Core<'_> {
         }
     }
 
-    /// Reads blocks with nothing running: each plain block of a G00/G01/G32/G33/G34 mode
-    /// (`modal::Plain`) writes its move straight into the next slot of `out` (none for a move
-    /// to where the machine stands, PRJ.NOOP), until `out` is full or another block is read
+    /// Reads blocks with nothing running, while `out` has room: a plain block of a
+    /// G00/G01/G32/G33/G34 mode (`modal::Plain`) writes its move straight into the next slot
+    /// (none for a move to where the machine stands, PRJ.NOOP); a plain G90/G94 or G92 block
+    /// (`Machine::plain_cycle`) writes its cycle's events after it, and the next block is read
+    /// once the cycle is done. Any other block is read by the interpreter and ends the call
     /// (what it runs, if anything, is left in `run`). Returns as [`Core::fill_slow`]. Bounded
     /// work: a block per iteration, at most `out.len()` events.
     fn fill_blocks(&mut self, out: &mut [Event]) -> (usize, Result<bool, Alarm>) {
         let mut n = 0;
-        while let Some(slot) = out.get_mut(n) {
+        while let Some(rest) = out.get_mut(n..).filter(|r| !r.is_empty()) {
             match self.lex() {
                 Ok(true) => {}
                 Ok(false) => return (n, Ok(false)),
                 Err(a) => return (n, self.fail_with(a)),
             }
-            let plain = self.machine.plain(&self.block).filter(|p| p.is_move());
-            let Some(plain) = plain else {
+            let Some(plain) = self.machine.plain(&self.block) else {
                 return match self.interpret() {
                     Ok(()) => (n, Ok(true)),
                     Err(a) => (n, self.fail_with(a)),
                 };
             };
+            if !plain.is_move() {
+                // A G90/G94 or G92 pass: its cycle writes its events now.
+                if let Err(a) = self.machine.plain_cycle(plain, &self.block, &mut self.run) {
+                    return (n, self.fail_with(a));
+                }
+                let pos = &mut self.machine.pos;
+                let (written, done) = match &mut self.run {
+                    Run::Cut(c) => c.fill(pos, rest),
+                    other => other.fill(pos, rest, &self.contour),
+                };
+                n += written;
+                if !done {
+                    return (n, Ok(true));
+                }
+                self.run = Run::Idle;
+                continue;
+            }
             match self.machine.plain_move(plain, &self.block) {
                 Ok(Some(m)) => {
-                    if let Some(e) = emit(m, &mut self.machine.pos) {
+                    if let (Some(e), Some(slot)) = (emit(m, &mut self.machine.pos), rest.first_mut()) {
                         *slot = e;
                         n += 1;
                     }

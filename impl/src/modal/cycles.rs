@@ -15,6 +15,7 @@ use cycle_vocab::{Alarm, AlarmCode, Move, Rule};
 
 impl Machine {
     /// G92.MODAL, G92.FORMAT: a block in G92 mode or with G92.
+    #[inline(always)]
     pub(super) fn g92(&mut self, coded: bool, v: &Vals, axis: bool, line: u32, run: &mut Run) -> Result<(), Alarm> {
         if coded && self.mode != Mode::G92 {
             self.g92.new_run(self.pos);
@@ -165,6 +166,7 @@ impl Machine {
     /// new run (the code after another motion mode) starts with taper 0 and the end at the
     /// current position; omitted end coordinates and taper are the run's; without axis words
     /// the block only sets the taper and the feed. (4) the lead (COM.LEAD), then the cycle.
+    #[inline(always)]
     pub(super) fn cut(&mut self, code: CutCode, coded: bool, v: &Vals, axis: bool, line: u32, run: &mut Run) -> Result<(), Alarm> {
         if coded && self.mode != Mode::Cut(code) {
             self.cut.new_run(self.pos);
@@ -188,7 +190,11 @@ impl Machine {
         };
         self.speed_limit(line)?;
         self.cut.index = self.cut.index.saturating_add(1);
-        *run = Run::Cut(g90::cycle(code, &self.cut, self.pos, feed, line)?);
+        // A `match`, not `?`: `?` copies the cycle once more on its way out.
+        match g90::cycle(code, &self.cut, self.pos, feed, line) {
+            Ok(c) => *run = Run::Cut(c),
+            Err(a) => return Err(a),
+        }
         Ok(())
     }
 

@@ -77,8 +77,8 @@ impl Machine {
         // G96.SMAX: no G96 in this block (the interpreter's `g96 && !limited`).
         self.smax_due = false;
         let line = b.line;
-        for (first, second) in [(b'X', b'U'), (b'Z', b'W')] {
-            if b.has(first) && b.has(second) {
+        for (pair, second) in [(const { letter_mask(b"UX") }, b'U'), (const { letter_mask(b"WZ") }, b'W')] {
+            if b.mask() & pair == pair {
                 return Err(Alarm::new(AlarmCode::Conflict, Some(second), Rule::ComAbsInc, line));
             }
         }
