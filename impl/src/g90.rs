@@ -58,8 +58,13 @@ impl CutState {
 /// ③ feed back to the start's X (G90) or Z (G94), ④ rapid back to A. The machine ends at A.
 #[derive(Clone, Copy, Debug)]
 pub struct Cycle {
-    /// The pass header, until it is emitted.
-    header: Option<Pass>,
+    /// The pass header is still to be emitted. The header is built from `index`, `depth` and
+    /// `rule_path` when it is written (not kept as a `Pass` written just before: the event is
+    /// then built from values in registers, not re-read across narrower stores).
+    header: bool,
+    /// The pass index within the run and its depth (diameter, increments).
+    index: u32,
+    depth: i64,
     /// Ends of ① (the cut start), ② (D), ③, ④ (A).
     cut_start: (i64, i64),
     end: (i64, i64),
@@ -94,6 +99,7 @@ fn taper_fits(t: i64, travel: i64) -> bool {
 /// taper and the modal `feed`: step 5 in the register's order — G90: W = 0 (G90.FORMAT), then
 /// the taper (G90.TAPER); G94: U = 0 (G94.FORMAT), then the taper (G94.TAPER) — then the pass
 /// (index within the run, kind ROUGH, depth = the infeed of ①).
+#[inline(always)]
 pub fn cycle(code: CutCode, st: &CutState, a: (i64, i64), feed: i64, line: u32) -> Result<Cycle, Alarm> {
     let (rule_format, rule_path, rule_taper) = code.rules();
     let geometry = |word: u8, rule: Rule| Alarm::new(AlarmCode::Geometry, Some(word), rule, line);
@@ -127,9 +133,10 @@ pub fn cycle(code: CutCode, st: &CutState, a: (i64, i64), feed: i64, line: u32) 
             ((a.0, cz), (d.0, a.1), sub(a.1, cz).saturating_abs().saturating_mul(2))
         }
     };
-    let header = Pass { index: st.index, kind: PassKind::Rough, diameter_depth, rule: rule_path };
     Ok(Cycle {
-        header: Some(header),
+        header: true,
+        index: st.index,
+        depth: diameter_depth,
         cut_start,
         end: d,
         back,
@@ -142,6 +149,17 @@ pub fn cycle(code: CutCode, st: &CutState, a: (i64, i64), feed: i64, line: u32) 
 }
 
 impl Cycle {
+    /// The pass header (index within the run, kind ROUGH, depth = the infeed of ①), if it is
+    /// still to be emitted; it is then emitted.
+    #[inline(always)]
+    fn take_header(&mut self) -> Option<Pass> {
+        if !self.header {
+            return None;
+        }
+        self.header = false;
+        Some(Pass { index: self.index, kind: PassKind::Rough, diameter_depth: self.depth, rule: self.rule_path })
+    }
+
     /// The move of `step` (G90.PATH / G94.PATH ①–④).
     fn move_at(&self, step: u8) -> Option<Move> {
         let p = self.rule_path;
@@ -158,7 +176,7 @@ impl Cycle {
     /// to the current position is not emitted (PRJ.NOOP). Bounded work: at most four skipped
     /// moves per call.
     pub fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
-        if let Some(h) = self.header.take() {
+        if let Some(h) = self.take_header() {
             return Some(Event::Pass(h));
         }
         while self.step < STEPS {
@@ -181,7 +199,7 @@ impl Batch<CUT_EVENTS> for Cycle {
     }
 
     fn begun(&self) -> bool {
-        self.header.is_none() && self.step < STEPS
+        !self.header && self.step < STEPS
     }
 
     fn ready(&mut self) -> bool {
@@ -192,7 +210,7 @@ impl Batch<CUT_EVENTS> for Cycle {
     #[inline(always)]
     fn write_unit(&mut self, pos: &mut (i64, i64), slots: &mut [Event; CUT_EVENTS]) -> usize {
         let mut unit = Unit::new(slots);
-        if let Some(h) = self.header.take() {
+        if let Some(h) = self.take_header() {
             unit.put(Event::Pass(h));
         }
         for step in 0..STEPS {
