@@ -76,7 +76,9 @@ impl PullMemo {
 /// One G92 cycle from `a` with the run's values: checks in the register's order — W = 0
 /// (G92.FORMAT), taper (G92.TAPER), side (COM.SIDE), No.107 (G92.JK.8), K against the long-axis
 /// travel (G92.PULLOUT), pass bound (PRJ.MAXPASS), step ③ opposite to ① (G92.PATH) — then the
-/// cycle (G92.PATH).
+/// cycle (G92.PATH). Inlined into the block interpreter, so that the cycle is built where it
+/// runs (`Run`), not copied there.
+#[inline(always)]
 pub fn cycle(
     config: &Config,
     params: &Params,
