@@ -191,7 +191,7 @@ impl Cycle {
 }
 
 /// The most events of a cycle: its header and four moves.
-const CUT_EVENTS: usize = 1 + STEPS as usize;
+pub(crate) const CUT_EVENTS: usize = 1 + STEPS as usize;
 
 impl Batch<CUT_EVENTS> for Cycle {
     fn next_event(&mut self, pos: &mut (i64, i64)) -> Option<Event> {
@@ -226,6 +226,13 @@ impl Cycle {
     /// whole cycle at once where it fits ([`batch::fill`]); how many, and whether it is done.
     pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> (usize, bool) {
         batch::fill(self, pos, out)
+    }
+
+    /// Writes a new cycle's events, all of them, into `slots` (as [`Cycle::fill`] would);
+    /// how many. The cycle is then done.
+    #[inline(always)]
+    pub(crate) fn write_all(&mut self, pos: &mut (i64, i64), slots: &mut [Event; CUT_EVENTS]) -> usize {
+        self.write_unit(pos, slots)
     }
 }
 

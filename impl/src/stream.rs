@@ -5,6 +5,7 @@
 use crate::config;
 use crate::contour::Contour;
 use crate::emit::emit;
+use crate::g90::CUT_EVENTS;
 use crate::lex::{Block, Blocks};
 use crate::modal::{Machine, Program};
 use crate::run::Run;
@@ -150,9 +151,10 @@ impl Core<'_> {
 
     /// Reads blocks with nothing running, while `out` has room: a plain block of a
     /// G00/G01/G32/G33/G34 mode (`modal::Plain`) writes its move straight into the next slot
-    /// (none for a move to where the machine stands, PRJ.NOOP); a plain G90/G94 or G92 block
-    /// (`Machine::plain_cycle`) writes its cycle's events after it, and the next block is read
-    /// once the cycle is done. Any other block is read by the interpreter and ends the call
+    /// (none for a move to where the machine stands, PRJ.NOOP); a plain G90/G94 block's cycle
+    /// (`Machine::plain_cut`) writes its events straight after it, whole where they fit, and
+    /// runs on (in `run`) where not; a plain G92 block (`Machine::plain_cycle`) writes its
+    /// cycle's events after it; the next block is read once the cycle is done. Any other block is read by the interpreter and ends the call
     /// (what it runs, if anything, is left in `run`). Returns as [`Core::fill_slow`]. Bounded
     /// work: a block per iteration, at most `out.len()` events.
     fn fill_blocks(&mut self, out: &mut [Event]) -> (usize, Result<bool, Alarm>) {
@@ -169,14 +171,34 @@ impl Core<'_> {
                     Err(a) => (n, self.fail_with(a)),
                 };
             };
+            if let Some(code) = plain.cut() {
+                // A G90/G94 pass: its cycle, written whole where it fits, else run.
+                let mut cycle = match self.machine.plain_cut(code, &self.block) {
+                    Ok(Some(c)) => c,
+                    Ok(None) => continue,
+                    Err(a) => return (n, self.fail_with(a)),
+                };
+                let pos = &mut self.machine.pos;
+                if let Some(slots) = rest.first_chunk_mut::<CUT_EVENTS>() {
+                    n += cycle.write_all(pos, slots);
+                    continue;
+                }
+                let (written, done) = cycle.fill(pos, rest);
+                n += written;
+                if !done {
+                    self.run = Run::Cut(cycle);
+                    return (n, Ok(true));
+                }
+                continue;
+            }
             if !plain.is_move() {
-                // A G90/G94 or G92 pass: its cycle writes its events now.
+                // A G92 pass: its cycle writes its events now.
                 if let Err(a) = self.machine.plain_cycle(plain, &self.block, &mut self.run) {
                     return (n, self.fail_with(a));
                 }
                 let pos = &mut self.machine.pos;
                 let (written, done) = match &mut self.run {
-                    Run::Cut(c) => c.fill(pos, rest),
+                    Run::Multipass(c) => c.fill(pos, rest),
                     other => other.fill(pos, rest, &self.contour),
                 };
                 n += written;

@@ -168,6 +168,16 @@ impl Machine {
     /// the block only sets the taper and the feed. (4) the lead (COM.LEAD), then the cycle.
     #[inline(always)]
     pub(super) fn cut(&mut self, code: CutCode, coded: bool, v: &Vals, axis: bool, line: u32, run: &mut Run) -> Result<(), Alarm> {
+        if let Some(c) = self.cut_cycle(code, coded, v, axis, line)? {
+            *run = Run::Cut(c);
+        }
+        Ok(())
+    }
+
+    /// [`Machine::cut`]'s cycle, returned (none without axis words); inlined, so that the
+    /// caller builds it where it keeps it.
+    #[inline(always)]
+    pub(super) fn cut_cycle(&mut self, code: CutCode, coded: bool, v: &Vals, axis: bool, line: u32) -> Result<Option<g90::Cycle>, Alarm> {
         if coded && self.mode != Mode::Cut(code) {
             self.cut.new_run(self.pos);
         }
@@ -182,7 +192,7 @@ impl Machine {
             self.cut.taper = if code == CutCode::G94 && end_minus_start { -t } else { t };
         }
         if !axis {
-            return Ok(());
+            return Ok(None);
         }
         self.cut.end = Self::end_point(v, self.pos, self.cut.end);
         let Some(feed) = self.feed else {
@@ -190,12 +200,7 @@ impl Machine {
         };
         self.speed_limit(line)?;
         self.cut.index = self.cut.index.saturating_add(1);
-        // A `match`, not `?`: `?` copies the cycle once more on its way out.
-        match g90::cycle(code, &self.cut, self.pos, feed, line) {
-            Ok(c) => *run = Run::Cut(c),
-            Err(a) => return Err(a),
-        }
-        Ok(())
+        g90::cycle(code, &self.cut, self.pos, feed, line).map(Some)
     }
 
     /// G162.FORMAT: (4) missing words — F (G162.F), H (G162.H), P/Q as a pair (G162.PQ), X, Z

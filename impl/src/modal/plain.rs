@@ -14,6 +14,7 @@
 //! it straight into the caller's buffer ([`crate::Expander::fill`]).
 
 use super::{Kind, Machine, Mode, Vals};
+use crate::g90::{self, CutCode};
 use crate::lex::{letter_mask, Block};
 use crate::run::Run;
 use crate::words::{signed_length, At};
@@ -35,6 +36,15 @@ impl Plain {
     #[inline(always)]
     pub(crate) fn is_move(self) -> bool {
         matches!(self.kind, Kind::Rapid | Kind::Feed | Kind::Thread(_))
+    }
+
+    /// The G90/G94 code of a block that is a pass of that mode ([`Machine::plain_cut`]).
+    #[inline(always)]
+    pub(crate) fn cut(self) -> Option<CutCode> {
+        match self.kind {
+            Kind::Cut(code) => Some(code),
+            _ => None,
+        }
     }
 }
 
@@ -109,6 +119,16 @@ impl Machine {
                 Ok(m)
             }
         }
+    }
+
+    /// A plain block of the G90/G94 mode `code` ([`Plain::cut`]): its cycle, returned (none
+    /// without axis words) for the caller to build where it keeps it; inlined for that.
+    #[inline(always)]
+    pub(crate) fn plain_cut(&mut self, code: CutCode, b: &Block) -> Result<Option<g90::Cycle>, Alarm> {
+        let a = self.axes(b)?;
+        let axis = a.any();
+        let v = Vals { u: a.u, w: a.w, x: a.x, z: a.z, ..Vals::default() };
+        self.cut_cycle(code, false, &v, axis, b.line)
     }
 
     /// A plain block that is no move: the G90/G94 or G92 handler writes its cycle into `run`
