@@ -211,7 +211,14 @@ impl Roughing {
     /// D(P) = s·(P.a − A.a).
     #[inline]
     fn reach(&self, p: (i64, i64)) -> i128 {
-        i128::from(self.s) * (i128::from(self.axis.a(p)) - i128::from(self.axis.a(self.start)))
+        let d = i128::from(self.axis.a(p)) - i128::from(self.axis.a(self.start));
+        // s = ±1 (`new` refused A′.a = A.a): s·d as a negation, not a product (a product by a
+        // symbolic −1 is out of reach of the SAT solver behind the proof `g71_layer_step`).
+        if self.s < 0 {
+            -d
+        } else {
+            d
+        }
     }
 
     /// a_k, the layer coordinate of layer k. (Public, hidden, only for the proof harness
@@ -219,7 +226,9 @@ impl Roughing {
     #[doc(hidden)]
     #[inline]
     pub fn layer_at(&self, k: u32) -> i64 {
-        self.axis.a(self.start).saturating_add(self.s.saturating_mul(layer_offset(k, self.step)))
+        let d = layer_offset(k, self.step);
+        // s·d (s = ±1, d ≥ 0) as a negation, as in `reach`.
+        self.axis.a(self.start).saturating_add(if self.s < 0 { d.saturating_neg() } else { d })
     }
 
     /// Layer k's cut end b_k when P_j is the last point of Q on or before it (G71.LAYER): Q's
@@ -269,9 +278,10 @@ impl Roughing {
         self.cut_at(contour, j, k)
     }
 
-    /// Whether layer k's cut is positive, c·(b_k − A.b) > 0.
+    /// Whether layer k's cut is positive, c·(b_k − A.b) > 0: the sign of b_k − A.b is c (c = ±1,
+    /// `new` refused c = 0), written without a product.
     fn cuts(&self, b: i64) -> bool {
-        self.c * sign(b.saturating_sub(self.axis.b(self.start))) > 0
+        sign(b.saturating_sub(self.axis.b(self.start))) == self.c
     }
 
     /// G71.LAYER: the number of layers K — the k before the first that fails — counted up to
