@@ -1,6 +1,7 @@
 //! Harness `g73_passes` (issue #33) — G73.DEPTH, G73.PATH, PRJ.MAXPASS: the passes of the
 //! production G73 cycle (`cycle_impl::g73::Cycle`, below the lexer), at a symbolic pass n₀, with
-//! the offsets' rounded quotients stubbed by their specification.
+//! the offsets' rounded quotients stubbed by their specification. A TEST until a Kani run
+//! reports SUCCESSFUL (proofs/README.md: what was measured).
 //!
 //! **Property.** For A anywhere in ±2^60, Δi, Δk, Δu, Δw within ±N, d 1…N, any feed, line,
 //! `max_passes` (1…10^6), either g73.c reading, the count word R or D, and a contour element of
@@ -297,8 +298,9 @@ cycle_harness::property! {
         rules: ["G73.DEPTH", "G73.PATH", "G73.COUNT", "PRJ.MAXPASS"],
         states: "The G73 passes at every pass n: TOO MANY PASSES before motion exactly when d > max_passes; pass n's header and the contour translated by T(n) = (2·round(Δi(d − n)/d) + Δu, round(Δk(d − n)/d) + Δw); pass n + 1 exactly when n < d, its offset never larger, toward the allowance; pass d exactly at the allowance, then the rapid to A and the end: exactly d passes.",
         body: |src, scope| body(src, &scope),
-        /// The Kani proof (`-Z stubbing`: `escape`, the contour).
-        kani: test(KANI) { unwind: 6, stubs: [cycle_impl::g73::escape => stubs::escape_spec, cycle_impl::contour::Contour::len => stubs::contour_len, cycle_impl::contour::Contour::get => stubs::contour_get], why: "not yet run" },
+        /// The Kani harness (`-Z stubbing`: `escape`, the contour); a TEST until a run reports
+        /// SUCCESSFUL (a proof harness with `kani-attempts`).
+        kani: test(KANI) { unwind: 6, stubs: [cycle_impl::g73::escape => stubs::escape_spec, cycle_impl::contour::Contour::len => stubs::contour_len, cycle_impl::contour::Contour::get => stubs::contour_get], why: "not run to a verdict at this commit (the Kani lock held by another helper's batch of runs from 22:51 on); measured before, Kani 0.61.0 / CBMC 6.4.0, CaDiCaL 1.5.3: with unwind 9, a loop in the harness and pass 1 taken from `new` (whose refusal branch leaves CBMC not knowing the phase), symbolic execution 162 s (1.14 M steps), 2.55 M variables, 8.56 M clauses, about 25 queries answered, no verdict in 900 s (CBMC 3.8 GB by `ps`); the leaner harness at this commit (no loop of its own, unwind 6, pass 1 re-entered) is not yet measured" },
         tests {
             /// A at 0 (every position is A plus offsets: translation moves all alike), the element
             /// within ±1, lengths ≤ 1, d and max_passes ≤ 4: every combination.
