@@ -52,7 +52,7 @@ pub struct Cycle {
 
 /// Pass `n`'s radius and Z escapes: round(Δi·(d − n)/d), round(Δk·(d − n)/d), half away from
 /// zero (G73.DEPTH). (Public, hidden: the proof harness `g73_passes` in cycle-proofs stubs it by
-/// its specification, smt/ lemma 14.)
+/// its specification, smt/ lemma 15.)
 #[doc(hidden)]
 pub fn escape(w: &Words, n: i64) -> (i64, i64) {
     let left = i128::from(w.d.saturating_sub(n));

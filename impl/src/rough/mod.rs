@@ -212,8 +212,8 @@ impl Roughing {
     #[inline]
     fn reach(&self, p: (i64, i64)) -> i128 {
         let d = i128::from(self.axis.a(p)) - i128::from(self.axis.a(self.start));
-        // s = ±1 (`new` refused A′.a = A.a): s·d as a negation, not a product (a product by a
-        // symbolic −1 is out of reach of the SAT solver behind the proof `g71_layer_step`).
+        // s = ±1 (`new` refused A′.a = A.a): s·d as a negation, not a product (the same value;
+        // no multiplier circuit in the Kani query of `g71_layer_step`).
         if self.s < 0 {
             -d
         } else {
@@ -221,8 +221,8 @@ impl Roughing {
         }
     }
 
-    /// a_k, the layer coordinate of layer k. (Public, hidden, only for the proof harness
-    /// `g71_layers` in cycle-proofs.)
+    /// a_k, the layer coordinate of layer k. (Public, hidden, only for the proof harnesses
+    /// `g71_layers` and `g71_layer_step` in cycle-proofs.)
     #[doc(hidden)]
     #[inline]
     pub fn layer_at(&self, k: u32) -> i64 {
