@@ -51,8 +51,10 @@ pub struct Cycle {
 }
 
 /// Pass `n`'s radius and Z escapes: round(Δi·(d − n)/d), round(Δk·(d − n)/d), half away from
-/// zero (G73.DEPTH).
-fn escape(w: &Words, n: i64) -> (i64, i64) {
+/// zero (G73.DEPTH). (Public, hidden: the proof harness `g73_passes` in cycle-proofs stubs it by
+/// its specification, smt/ lemma 15.)
+#[doc(hidden)]
+pub fn escape(w: &Words, n: i64) -> (i64, i64) {
     let left = i128::from(w.d.saturating_sub(n));
     let d = i128::from(w.d);
     (sat(div_round_signed(i128::from(w.di) * left, d)), sat(div_round_signed(i128::from(w.dk) * left, d)))
@@ -89,12 +91,21 @@ impl Cycle {
         Move::rapid(self.a.0.saturating_add(self.shift.0), self.a.1.saturating_add(self.shift.1), Rule::G73Path)
     }
 
+    /// Pass `n` next: its header is the next event (what `end_pass` does after pass n − 1).
+    /// (Public, hidden: the proof harness `g73_passes` in cycle-proofs starts a run at a
+    /// symbolic pass n ≥ 2 with it.)
+    #[doc(hidden)]
+    #[inline(always)]
+    pub fn enter_pass(&mut self, n: i64) {
+        self.n = n;
+        self.phase = Phase::Header;
+    }
+
     /// After the pass's last element: the next pass, or the return after the last.
     #[inline(always)]
     fn end_pass(&mut self) {
         if self.n < self.w.d {
-            self.n += 1;
-            self.phase = Phase::Header;
+            self.enter_pass(self.n + 1);
         } else {
             self.phase = Phase::Return;
         }

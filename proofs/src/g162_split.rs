@@ -206,6 +206,17 @@ pub fn tail_body<S: Source>(src: &mut S, scope: &TailScope) -> Outcome {
         let Some(nx) = nx else { return Ok(()) };
         check!(src, nx.n == prev.n + 1 && nx.rule == Rule::G162Pq && nx.stage == 0, "G162.PQ: after full pass n < k comes full pass n + 1");
         // (n + 1)·Q, in the schedule's saturating form (the same value: (n + 1)·Q ≤ P < 2^63).
+        // Under Kani `full_depth` is stubbed by one drawn value F ([`stubs::full_depth_spec`],
+        // asked for n + 1 and Q only): its specification is F = (n + 1)·Q, and the only facts
+        // the step uses are those the value satisfies, Q ≤ F ≤ kQ (2 ≤ n + 1 ≤ k) — drawn there,
+        // so nothing is lost; the drivers run the real product.
+        #[cfg(kani)]
+        let want = {
+            let f = bounded_i64_upto(src, q, kq, scope.max_len)?;
+            stubs::set_full(n as u32 + 1, q, f);
+            f
+        };
+        #[cfg(not(kani))]
         let want = i64::try_from(u64::from(nx.n).saturating_mul(q.max(1).unsigned_abs())).unwrap_or(i64::MAX);
         check!(src, nx.depth == want, "G162.PQ: full pass n + 1 is (n + 1)·Q deep");
         cover!(src, true, "a full pass before the last");
@@ -328,6 +339,23 @@ pub mod stubs {
         D.store(d, SeqCst);
     }
 
+    static FULL_N: AtomicI64 = AtomicI64::new(0);
+    static FULL_Q: AtomicI64 = AtomicI64::new(0);
+    static FULL: AtomicI64 = AtomicI64::new(0);
+
+    /// Records F = (n + 1)·Q for full pass n + 1 (`g162_split_tail`).
+    pub fn set_full(n: u32, q: i64, f: i64) {
+        FULL_N.store(i64::from(n), SeqCst);
+        FULL_Q.store(q, SeqCst);
+        FULL.store(f, SeqCst);
+    }
+
+    /// `cycle_impl::g162::split::full_depth(n, Q)` = nQ, asked for the recorded full pass only.
+    pub fn full_depth_spec(n: u32, q: u64) -> u64 {
+        kani::assert(i64::from(n) == FULL_N.load(SeqCst) && q as i64 == FULL_Q.load(SeqCst), "full_depth is asked for full pass n + 1 and Q only");
+        FULL.load(SeqCst) as u64
+    }
+
     /// `cycle_impl::g162::split::norm` for the recorded P and Q: (P, Q, k, D).
     pub fn norm_spec(sp: &SplitParams) -> Norm {
         let p = sp.depth.max(1).unsigned_abs();
@@ -361,7 +389,7 @@ cycle_harness::property! {
         body: |src, scope| tail_body(src, &scope),
         /// The Kani harness that was run (Kissat; also tried with CaDiCaL): no verdict, so a TEST, a
         /// proof harness only with `kani-attempts` (`-Z stubbing`).
-        kani: test(TAIL_KANI) { unwind: 6, solver: kissat, stubs: [cycle_impl::g162::split::norm => stubs::norm_spec, cycle_impl::g162::split::target => crate::g162_split_target::target_spec], why: "no verdict: as it stands (the base kQ free of the product, `target` stubbed by `g162_split_target`'s lemma: 0.51 M variables, 1.62 M clauses), Kissat 4.0.1: 900 s (eight queries answered at 11–23 s each, the ninth open for 10 min; CBMC 0.68 GB by `ps`), CaDiCaL 1.5.3: 900 s (seven queries answered, the eighth open for 14 min; CBMC 0.77 GB by `ps`), load 2–6; with the base free but the real `target` (1.10 M variables, 4.25 M clauses), CaDiCaL 1.5.3: twelve queries answered in 5 min 29 s, stopped by hand; before (base k·Q, real `target`), CaDiCaL: 10 min of CBMC (1.25 M variables, 5.13 M clauses; eleven queries answered, the twelfth open for 7 min; 1.97 GB), stopped by hand, and Kissat 4.0.1: 900 s (eight queries answered at 30–70 s each, the ninth open for 9 min; CBMC 1.23 GB by `ps`)" },
+        kani: test(TAIL_KANI) { unwind: 6, solver: kissat, stubs: [cycle_impl::g162::split::norm => stubs::norm_spec, cycle_impl::g162::split::target => crate::g162_split_target::target_spec, cycle_impl::g162::split::full_depth => stubs::full_depth_spec], why: "no verdict: with `full_depth` (a full pass's nQ, the last product) stubbed too (issue #33, this session: 0.46 M variables, 1.36 M clauses), Kissat 4.0.1: seven queries answered at 9–12 s each, the eighth open for 4 min 40 s, stopped by hand at 7 min (CBMC 0.70 GB by `ps`); before, without that stub (the base kQ free of the product, `target` stubbed by `g162_split_target`'s lemma: 0.51 M variables, 1.62 M clauses), Kissat 4.0.1: 900 s (eight queries answered at 11–23 s each, the ninth open for 10 min; CBMC 0.68 GB by `ps`), CaDiCaL 1.5.3: 900 s (seven queries answered, the eighth open for 14 min; CBMC 0.77 GB by `ps`), load 2–6; with the base free but the real `target` (1.10 M variables, 4.25 M clauses), CaDiCaL 1.5.3: twelve queries answered in 5 min 29 s, stopped by hand; before (base k·Q, real `target`), CaDiCaL: 10 min of CBMC (1.25 M variables, 5.13 M clauses; eleven queries answered, the twelfth open for 7 min; 1.97 GB), stopped by hand, and Kissat 4.0.1: 900 s (eight queries answered at 30–70 s each, the ninth open for 9 min; CBMC 1.23 GB by `ps`)" },
         tests {
             /// `g162_split_tail`'s body: P, Q ≤ 40 (k ≤ 40 / Q); each draw its 6 smallest and largest values.
             fn g162_split_tail_exhaustive = exhaustive(6, 2_000_000) on TailScope { max_len: 40, k_below_quotient: true };

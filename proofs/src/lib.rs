@@ -23,6 +23,8 @@ pub mod schedule_step;
 pub mod schedule_count;
 pub mod schedule_new_shape;
 pub mod g71_layers;
+pub mod g71_layer_step;
+pub mod g73_passes;
 pub mod fixed_point;
 pub mod mutation;
 pub mod expander_envelope;
@@ -65,4 +67,6 @@ pub const PROPERTIES: &[Property] = &[
     g92_pullout::PROPERTY,
     g162_split::EXACT,
     g162_pitch::PROPERTY,
+    g71_layer_step::PROPERTY,
+    g73_passes::PROPERTY,
 ];

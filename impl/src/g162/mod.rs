@@ -188,7 +188,7 @@ impl Cycle {
         if prev.stage == 0 && u64::from(prev.n) < k && prev.depth.max(0).unsigned_abs() < p {
             // As `split::next`: full pass n at depth nQ ≤ kQ ≤ P.
             let n = prev.n.checked_add(1)?;
-            let depth = u64::from(n).saturating_mul(q);
+            let depth = split::full_depth(n, q);
             return Some(Step { n, depth: i64::try_from(depth).unwrap_or(i64::MAX), last: depth >= p, rule: Rule::G162Pq, stage: 0 });
         }
         next(&split, prev)

@@ -100,9 +100,18 @@ pub fn next(sp: &SplitParams, prev: &Step) -> Option<Step> {
     let n = prev.n.checked_add(1)?;
     if prev.stage == 0 && u64::from(prev.n) < q.k {
         // Full pass n at depth nQ ≤ kQ ≤ P.
-        return Some(step(n, u64::from(n).saturating_mul(q.q), &q, 0));
+        return Some(step(n, full_depth(n, q.q), &q, 0));
     }
     split_after(&q, prev.stage, prev_depth, n)
+}
+
+/// G162.PQ: full pass n's depth nQ (saturating; nQ ≤ kQ ≤ P for every full pass). The one
+/// product of the split's step, shared by `next` and the cycle's own stepping. (Public, hidden:
+/// the proof harness `g162_split_tail` in cycle-proofs stubs it by its specification.)
+#[doc(hidden)]
+#[inline(always)]
+pub fn full_depth(n: u32, q: u64) -> u64 {
+    u64::from(n).saturating_mul(q)
 }
 
 /// PRJ.MAXPASS: the number of passes, or `None` when it exceeds `limit`. Closed form: the k

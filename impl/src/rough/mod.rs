@@ -194,6 +194,13 @@ impl Roughing {
         Ok(cycle)
     }
 
+    /// K, the number of layers `new` counted (the run's layers are 1…K). (Public, hidden, only
+    /// for the proof harness `g71_layer_step` in cycle-proofs.)
+    #[doc(hidden)]
+    pub fn layer_count(&self) -> u32 {
+        self.layers
+    }
+
     /// Q's point i: the end of element i shifted by the allowances.
     #[inline]
     fn point(&self, contour: &Contour, i: usize) -> (i64, i64) {
@@ -204,16 +211,24 @@ impl Roughing {
     /// D(P) = s·(P.a − A.a).
     #[inline]
     fn reach(&self, p: (i64, i64)) -> i128 {
-        i128::from(self.s) * (i128::from(self.axis.a(p)) - i128::from(self.axis.a(self.start)))
+        let d = i128::from(self.axis.a(p)) - i128::from(self.axis.a(self.start));
+        // s = ±1 (`new` refused A′.a = A.a): s·d as a negation, not a product (the same value;
+        // no multiplier circuit in the Kani query of `g71_layer_step`).
+        if self.s < 0 {
+            -d
+        } else {
+            d
+        }
     }
 
-    /// a_k, the layer coordinate of layer k. (Public, hidden, only for the proof harness
-    /// `g71_layers` in cycle-proofs.)
+    /// a_k, the layer coordinate of layer k. (Public, hidden, only for the proof harnesses
+    /// `g71_layers` and `g71_layer_step` in cycle-proofs.)
     #[doc(hidden)]
     #[inline]
     pub fn layer_at(&self, k: u32) -> i64 {
-        let d = i64::from(k).saturating_mul(self.step);
-        self.axis.a(self.start).saturating_add(self.s.saturating_mul(d))
+        let d = layer_offset(k, self.step);
+        // s·d (s = ±1, d ≥ 0) as a negation, as in `reach`.
+        self.axis.a(self.start).saturating_add(if self.s < 0 { d.saturating_neg() } else { d })
     }
 
     /// Layer k's cut end b_k when P_j is the last point of Q on or before it (G71.LAYER): Q's
@@ -263,9 +278,10 @@ impl Roughing {
         self.cut_at(contour, j, k)
     }
 
-    /// Whether layer k's cut is positive, c·(b_k − A.b) > 0.
+    /// Whether layer k's cut is positive, c·(b_k − A.b) > 0: the sign of b_k − A.b is c (c = ±1,
+    /// `new` refused c = 0), written without a product.
     fn cuts(&self, b: i64) -> bool {
-        self.c * sign(b.saturating_sub(self.axis.b(self.start))) > 0
+        sign(b.saturating_sub(self.axis.b(self.start))) == self.c
     }
 
     /// G71.LAYER: the number of layers K — the k before the first that fails — counted up to
@@ -276,7 +292,7 @@ impl Roughing {
     pub fn count(&self, contour: &Contour, limit: u32) -> u32 {
         let step = i128::from(self.step.max(1));
         let d0 = self.reach(self.point(contour, 0));
-        let k1 = if d0 > 0 { (d0 - 1) / step } else { 0 };
+        let k1 = if d0 > 0 { layers_within(d0 - 1, step) } else { 0 };
         let last = u32::try_from(k1.min(i128::from(limit))).unwrap_or(limit);
         let mut lo = 1u32;
         for j in (0..self.n).rev() {
@@ -288,7 +304,7 @@ impl Roughing {
             if reach < step {
                 continue;
             }
-            let hi = u32::try_from((reach / step).min(i128::from(last))).unwrap_or(last);
+            let hi = u32::try_from(layers_within(reach, step).min(i128::from(last))).unwrap_or(last);
             if hi < lo {
                 continue;
             }
@@ -309,6 +325,26 @@ impl Roughing {
         }
         last
     }
+}
+
+/// k·step, layer k's distance from A along a (G71.LAYER): exact, as k ≤ `max_passes` ≤ 10^6
+/// and step ≤ 2N keep it below 2^51 (it saturates, never wraps). (Public, hidden: the proof
+/// harness `g71_layer_step` in cycle-proofs stubs it by its specification, (k + 1)·step =
+/// k·step + step.)
+#[doc(hidden)]
+#[inline]
+pub fn layer_offset(k: u32, step: i64) -> i64 {
+    i64::from(k).saturating_mul(step)
+}
+
+/// ⌊`reach`/`step`⌋ for `reach` ≥ 0 and `step` ≥ 1: the number of layers k ≥ 1 with
+/// k·step ≤ `reach` (G71.LAYER; `count` asks it for D(Q₀) − 1, the layers strictly before Q₀,
+/// and for D(P_j)). (Public, hidden: the proof harness `g71_layer_step` in cycle-proofs stubs
+/// it by that bracket.)
+#[doc(hidden)]
+#[inline]
+pub fn layers_within(reach: i128, step: i128) -> i128 {
+    reach / step
 }
 
 /// Where the element from `from` to `to` (a line, or an arc about `centre`) crosses the layer
