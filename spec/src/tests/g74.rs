@@ -163,6 +163,21 @@ fn kept_return_per_code_and_parameter() {
     assert_eq!(t.moves().last().map(|m| (m.kind, m.x, m.z, m.feed)), Some((Feed, 5_000, 2_000, 1_000)));
 }
 
+/// G74.FORMAT: "A block with any of X U Z W P Q is the second block (R = Δd there), otherwise
+/// the first" — P alone, or Q alone, already makes it the second block: the cycle's checks run
+/// (no travel along the peck axis: `GEOMETRY`), not the first block's word list (R only).
+#[test]
+fn p_or_q_alone_is_the_second_block() {
+    for (block, letter, rule) in [
+        ("G74 P1 F1", 'Z', Rule::G74Format),
+        ("G74 Q1 F1", 'Z', Rule::G74Format),
+        ("G75 P1 F1", 'X', Rule::G75Format),
+        ("G75 Q1 F1", 'X', Rule::G75Format),
+    ] {
+        assert_eq!(alarm_of(&format!("G0 X20 Z2\n{block}\n")), (AlarmCode::Geometry, Some(letter), rule, 2), "{block}");
+    }
+}
+
 /// Every alarm of the register's checks for G74 and G75, in order, with its word, rule, line.
 #[test]
 fn g74_g75_alarms() {
