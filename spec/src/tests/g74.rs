@@ -178,6 +178,20 @@ fn p_or_q_alone_is_the_second_block() {
     }
 }
 
+/// PRJ.MAXPASS at its edge, counted by hand: from X20 Z1, `G74 X32 Z-5 P3 Q2` steps 2Δi = 6 on
+/// the diameter — columns at X20, X26, X32 (the X travel 12 an exact multiple: "one at A and one
+/// per step, the last exactly at E") — and pecks Q2 over the Z travel 6: 3 per column, 9 in all.
+/// "The pecks of all columns together > `max_passes`" is the alarm: 9 runs, 8 does not.
+#[test]
+fn pass_bound_with_whole_steps() {
+    let src = "G0 X20 Z1\nG74 X32 Z-5 P3 Q2 F1\n";
+    let with = |n: i64| Config { params: cycle_vocab::Params { max_passes: Some(n), ..Default::default() }, ..Config::default() };
+    let t = run_with(src, &with(9));
+    assert_eq!(passes(&t).len(), 3);
+    assert_eq!(t.moves().filter(|m| m.kind == MoveKind::Feed).count(), 9);
+    assert_eq!(alarm_with(src, &with(8)), (AlarmCode::TooManyPasses, Some('Q'), Rule::PrjMaxPass, 2));
+}
+
 /// Every alarm of the register's checks for G74 and G75, in order, with its word, rule, line.
 #[test]
 fn g74_g75_alarms() {
