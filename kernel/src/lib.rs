@@ -28,6 +28,7 @@ pub mod operator;
 pub mod readings;
 pub mod readback;
 pub mod registry;
+pub mod spec_alone;
 
 pub use conformance::{check, Divergence, DivergenceKind};
 pub use engine::{Engine, ImplEngine, SpecEngine};

@@ -7,12 +7,14 @@ const P: &[u8] = b"G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\nX58\n";
 #[test]
 fn lockstep_judges_like_the_whole_traces() {
     let c = Config::default();
-    let j = judge(&SpecEngine, &ImplEngine, P, &c);
-    assert_eq!(j.result, CaseResult::Conform);
     let t = cycle_spec::expand(P, &c);
-    let seen = j.reference.unwrap();
-    assert_eq!((seen.events, seen.alarm), (t.events.len(), None));
-    assert!(seen.rules.contains(&Rule::G92Pullout) && j.traces.is_none());
+    if !crate::spec_alone::skip("the lockstep judge of spec against impl") {
+        let j = judge(&SpecEngine, &ImplEngine, P, &c);
+        assert_eq!(j.result, CaseResult::Conform);
+        let seen = j.reference.unwrap();
+        assert_eq!((seen.events, seen.alarm), (t.events.len(), None));
+        assert!(seen.rules.contains(&Rule::G92Pullout) && j.traces.is_none());
+    }
     let wrong = SpecWith { name: "late-x", fault: |i, m| m.x += i64::from(i == 5) };
     let j = judge_keeping(&SpecEngine, &wrong, P, &c);
     let CaseResult::Diverge(d) = &j.result else { panic!("{:?}", j.result) };

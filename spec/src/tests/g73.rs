@@ -228,6 +228,31 @@ fn g73_alarms() {
     assert_eq!(alarm_with("G73 U1\n", &nc201), (UnsupportedCode, Some('G'), Rule::PrjDialect, 1));
 }
 
+/// G73.FORMAT: "a G73 block with P or Q and any of I, K, D is format (b)" — one of them alone
+/// already is, and the missing ones are then named in the order I, K, D (docs/INTERPRETATION.md,
+/// "G73 (pattern repeating)"), not refused as words format (a)'s second block does not allow.
+#[test]
+fn any_one_of_i_k_d_makes_format_b() {
+    let c = "N1 G1 X5\nN2 Z-5\n";
+    for (words, missing) in [("I1", 'K'), ("K1", 'I'), ("D2", 'I')] {
+        let src = format!("G0 X10 Z0\nG73 P1 Q2 {words} F1\n{c}");
+        assert_eq!(alarm_of(&src), (AlarmCode::MissingWord, Some(missing), Rule::G73Format, 2), "{words}");
+    }
+}
+
+/// PRJ.MAXPASS at its edge: "d greater than `max_passes` is `TOO MANY PASSES` on that word" —
+/// d equal to `max_passes` runs (d passes), one more is the alarm, R in format (a), D in (b).
+#[test]
+fn pass_bound_at_its_edge() {
+    let c = "N1 G1 X5\nN2 Z-5\n";
+    let with = |n: i64| Config { params: cycle_vocab::Params { max_passes: Some(n), ..Default::default() }, ..Config::default() };
+    for (blocks, word, line) in [("G73 R3\nG73 P1 Q2 F1\n", 'R', 3), ("G73 P1 Q2 I1 K1 D3 F1\n", 'D', 2)] {
+        let src = format!("G0 X10 Z0\n{blocks}{c}");
+        assert_eq!(passes(&run_with(&src, &with(3))).len(), 3, "{blocks}");
+        assert_eq!(alarm_with(&src, &with(2)), (AlarmCode::TooManyPasses, Some(word), Rule::PrjMaxPass, line), "{blocks}");
+    }
+}
+
 /// G73.USE: a contour that is not monotone (out to X20, back in to X14, out to X30) is taken by
 /// G73 and run on every pass; G71 refuses the same contour (G71.MONOTONE).
 #[test]

@@ -163,6 +163,35 @@ fn kept_return_per_code_and_parameter() {
     assert_eq!(t.moves().last().map(|m| (m.kind, m.x, m.z, m.feed)), Some((Feed, 5_000, 2_000, 1_000)));
 }
 
+/// G74.FORMAT: "A block with any of X U Z W P Q is the second block (R = Δd there), otherwise
+/// the first" — P alone, or Q alone, already makes it the second block: the cycle's checks run
+/// (no travel along the peck axis: `GEOMETRY`), not the first block's word list (R only).
+#[test]
+fn p_or_q_alone_is_the_second_block() {
+    for (block, letter, rule) in [
+        ("G74 P1 F1", 'Z', Rule::G74Format),
+        ("G74 Q1 F1", 'Z', Rule::G74Format),
+        ("G75 P1 F1", 'X', Rule::G75Format),
+        ("G75 Q1 F1", 'X', Rule::G75Format),
+    ] {
+        assert_eq!(alarm_of(&format!("G0 X20 Z2\n{block}\n")), (AlarmCode::Geometry, Some(letter), rule, 2), "{block}");
+    }
+}
+
+/// PRJ.MAXPASS at its edge, counted by hand: from X20 Z1, `G74 X32 Z-5 P3 Q2` steps 2Δi = 6 on
+/// the diameter — columns at X20, X26, X32 (the X travel 12 an exact multiple: "one at A and one
+/// per step, the last exactly at E") — and pecks Q2 over the Z travel 6: 3 per column, 9 in all.
+/// "The pecks of all columns together > `max_passes`" is the alarm: 9 runs, 8 does not.
+#[test]
+fn pass_bound_with_whole_steps() {
+    let src = "G0 X20 Z1\nG74 X32 Z-5 P3 Q2 F1\n";
+    let with = |n: i64| Config { params: cycle_vocab::Params { max_passes: Some(n), ..Default::default() }, ..Config::default() };
+    let t = run_with(src, &with(9));
+    assert_eq!(passes(&t).len(), 3);
+    assert_eq!(t.moves().filter(|m| m.kind == MoveKind::Feed).count(), 9);
+    assert_eq!(alarm_with(src, &with(8)), (AlarmCode::TooManyPasses, Some('Q'), Rule::PrjMaxPass, 2));
+}
+
 /// Every alarm of the register's checks for G74 and G75, in order, with its word, rule, line.
 #[test]
 fn g74_g75_alarms() {

@@ -179,6 +179,22 @@ fn g83_g84_alarms() {
     assert_eq!(t.moves().count(), 1);
 }
 
+/// The pass bound at its edge (docs/INTERPRETATION.md, "G83 and G84": "Pecks > `max_passes`:
+/// `TOO MANY PASSES` on Q", PRJ.MAXPASS), the pecks counted by hand: from the R level Z0, Q1000
+/// (µm, as the seed's `Q2000`, 003_b2c47ef6d53aacbe.txt:5) to Z-5 is 5 pecks exactly, to Z-5.001
+/// six (the last 1 µm). A count equal to `max_passes` is legal, one more is the alarm.
+#[test]
+fn g83_pass_bound_at_its_edge() {
+    let with = |n: i64| Config { params: cycle_vocab::Params { max_passes: Some(n), ..Default::default() }, ..Config::default() };
+    for (z, pecks) in [("-5", 5), ("-5.001", 6)] {
+        let src = format!("G0 X0 Z0\nG83 Z{z} Q1000 F1\n");
+        let t = run_with(&src, &with(pecks));
+        let feeds = t.moves().filter(|m| m.kind == MoveKind::Feed).count();
+        assert_eq!(feeds, pecks as usize, "{src}");
+        assert_eq!(alarm_with(&src, &with(pecks - 1)), (AlarmCode::TooManyPasses, Some('Q'), Rule::PrjMaxPass, 2), "{src}");
+    }
+}
+
 /// The feature files whose header comments lex (no nested parentheses) expand exactly as the
 /// blocks the tests above check by hand.
 #[test]

@@ -10,6 +10,9 @@ fn dates_are_civil() {
 
 #[test]
 fn regressions_are_written_decoded() {
+    if crate::spec_alone::skip("a parse_blocks regression's replay (the two lexers side by side)") {
+        return;
+    }
     let root = std::env::temp_dir().join(format!("cyclecheck-committed-{}", std::process::id()));
     let input = root.join("crash-1");
     std::fs::create_dir_all(&root).unwrap();

@@ -4,7 +4,12 @@ use cycle_vocab::Config;
 
 #[test]
 fn seeds_pass_encode_to_themselves_and_reach_every_family() {
+    // The parse_blocks and diff_spec_impl seeds compare the two lexers, the two engines.
+    let differential = crate::spec_alone::skip("the replay of the parse_blocks and diff_spec_impl seeds");
     for t in [Target::ParseBlocks, Target::DiffSpecImpl, Target::GcodeRoundtrip] {
+        if differential && t != Target::GcodeRoundtrip {
+            continue;
+        }
         let seeds = seeds(t);
         assert!(seeds.len() >= 20, "{}: {} seeds", t.name(), seeds.len());
         for (name, program, case) in &seeds {
