@@ -34,6 +34,10 @@ pub mod g90_envelope;
 pub mod peck_counts;
 pub mod g92_pullout_geometry;
 pub mod hold_retract;
+pub mod peck_parts;
+pub mod g74_peck_step;
+pub mod g83_peck_step;
+pub mod peck_toward;
 #[cfg(not(kani))]
 pub mod schedule_spec;
 
@@ -65,4 +69,7 @@ pub const PROPERTIES: &[Property] = &[
     g92_pullout::PROPERTY,
     g162_split::EXACT,
     g162_pitch::PROPERTY,
+    g74_peck_step::PROPERTY,
+    g83_peck_step::PROPERTY,
+    peck_toward::PROPERTY,
 ];
