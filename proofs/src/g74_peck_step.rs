@@ -47,11 +47,18 @@ pub struct Scope {
     pub max_pos: i64,
     /// Largest Δi, Δk, e, Δd and feed.
     pub max_len: i64,
+    /// Which states: 0 the start, 1 a peck before the last, 2 the last peck, 3 any of them.
+    pub case: u32,
 }
 
 /// Lengths 0…N, positions within ±2^60 (a program of fewer than 2^30 blocks, lib.rs: beyond, the
 /// header's 2·D may exceed 2^63 and saturate — a range the register does not reach).
-pub const FULL: Scope = Scope { max_pos: 1 << 60, max_len: MAX_LENGTH };
+pub const FULL: Scope = Scope { max_pos: 1 << 60, max_len: MAX_LENGTH, case: 3 };
+
+/// The Kani harnesses: one per kind of state (the start, a peck before the last, the last peck).
+pub const START: Scope = Scope { case: 0, ..FULL };
+pub const STEP: Scope = Scope { case: 1, ..FULL };
+pub const LAST: Scope = Scope { case: 2, ..FULL };
 
 /// The cycle's frame and words, as the register states them (`i128`).
 struct Frame {
@@ -172,7 +179,8 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
         Some(Event::Pass(Pass { index: index as u32, kind: PassKind::Rough, diameter_depth, rule: column_rule }))
     };
 
-    match src.choose(3) {
+    let case = if scope.case < 3 { scope.case } else { src.choose(3) };
+    match case {
         0 => {
             // The start: column 1's header, then peck 1 of column 0 with the tool at A.
             src.assume(i == 1 && j == 0)?;
@@ -247,16 +255,42 @@ cycle_harness::property! {
         rules: ["G74.FORMAT", "G74.PECK", "G74.E", "G74.COLUMN", "G74.RELIEF", "G75.FORMAT", "G75.PECK", "G75.COLUMN", "G75.RELIEF", "PRJ.MAXPASS"],
         states: "The G74/G75 cycle by induction over its states (i·len and ⌈D/len⌉ stubbed by smt/ lemma 14's table, checked by the drivers): refused exactly in the register's order, K·C > max_passes last; counts K pecks, C columns; from the start, from any peck before the last (one peck further, advancing, short of E, its return, then at peck i + 1) and from the last peck (exactly at E, relief, back, then the next column one step further — the last at E.s — or home and None).",
         body: |src, scope| body(src, &scope),
-        /// The Kani harness. Unwind 4: `next_event`'s loop runs at most three phases per call (a
-        /// skipped return, relief or rapid to the column, then a move); the harness has no loop.
-        kani: test(FULL) { unwind: 4, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "not yet measured" },
+        /// The Kani harness of the peck before the last (START and LAST: below). Unwind 3:
+        /// `next_event`'s loop runs at most two phases per call (skipped return, relief or rapid to the column, then a move); the harness has no loop.
+        kani: test(STEP) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "not yet measured" },
         tests {
             /// Positions −2, −1, 1, 2 and lengths 0…2 (each draw's 2 smallest and largest), both
             /// codes, both readings, every state.
-            fn g74_peck_step_exhaustive_small = exhaustive(2, 8_000_000) on Scope { max_pos: 2, max_len: 2 };
+            fn g74_peck_step_exhaustive_small = exhaustive(2, 8_000_000) on Scope { max_pos: 2, max_len: 2, case: 3 };
             /// The full ranges (one draw in eight an edge); and small ones, where cycles have few pecks
             /// and columns.
-            fn g74_peck_step_random = random(0x5eed_0741, 2) on FULL, random(0x5eed_0742, 2) on Scope { max_pos: 40, max_len: 12 };
+            fn g74_peck_step_random = random(0x5eed_0741, 2) on FULL, random(0x5eed_0742, 2) on Scope { max_pos: 40, max_len: 12, case: 3 };
+        }
+    }
+}
+
+cycle_harness::property! {
+    pub const START_PROPERTY = g74_peck_start in crate::PROPERTIES {
+        rules: ["G74.FORMAT", "G74.PECK", "G74.E", "G74.COLUMN", "G74.RELIEF", "G75.FORMAT", "G75.PECK", "G75.COLUMN", "G75.RELIEF", "PRJ.MAXPASS"],
+        states: "The G74/G75 cycle's start (the induction base of g74_peck_step; stubs as there): refused exactly in the register's order, the counts K and C, then column 1's header and the state at peck 1 of column 0, the tool at A.",
+        body: |src, scope| body(src, &scope),
+        /// The Kani harness of the start (unwind as `g74_peck_step`).
+        kani: test(START) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "not yet measured" },
+        tests {
+            fn g74_peck_start_random = random(0x5eed_0744, 4) on START, random(0x5eed_0745, 4) on Scope { max_pos: 40, max_len: 12, case: 0 };
+        }
+    }
+}
+
+cycle_harness::property! {
+    pub const LAST_PROPERTY = g74_peck_last in crate::PROPERTIES {
+        rules: ["G74.FORMAT", "G74.PECK", "G74.E", "G74.COLUMN", "G74.RELIEF", "G75.FORMAT", "G75.PECK", "G75.COLUMN", "G75.RELIEF", "PRJ.MAXPASS"],
+        states: "The G74/G75 cycle's last peck of any column (the rest of g74_peck_step's induction; stubs as there): one feed exactly to E.p, advancing; the relief from the second column; back to A.p; then the next column's header and its peck 1 one step further toward E.s (the last at E.s), or home to A and None.",
+        body: |src, scope| body(src, &scope),
+        /// The Kani harness of the last peck (unwind as `g74_peck_step`).
+        kani: test(LAST) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "not yet measured" },
+        tests {
+            fn g74_peck_last_random = random(0x5eed_0746, 4) on LAST, random(0x5eed_0747, 4) on Scope { max_pos: 40, max_len: 12, case: 2 };
         }
     }
 }

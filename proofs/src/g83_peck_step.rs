@@ -38,11 +38,18 @@ pub struct Scope {
     pub max_pos: i64,
     /// Largest |R|, Q and feed.
     pub max_len: i64,
+    /// Which states: 0 the start, 1 a peck before the last, 2 the last peck, 3 any of them.
+    pub case: u32,
 }
 
 /// R, Q 0…N, positions within ±2^60 (a program of fewer than 2^30 blocks, lib.rs: beyond, the
 /// header's 2·D may exceed 2^63 and saturate — a range the register does not reach).
-pub const FULL: Scope = Scope { max_pos: 1 << 60, max_len: MAX_LENGTH };
+pub const FULL: Scope = Scope { max_pos: 1 << 60, max_len: MAX_LENGTH, case: 3 };
+
+/// The Kani harnesses: one per kind of state (the start, a peck before the last, the last peck).
+pub const START: Scope = Scope { case: 0, ..FULL };
+pub const STEP: Scope = Scope { case: 1, ..FULL };
+pub const LAST: Scope = Scope { case: 2, ..FULL };
 
 /// The harness body (see the module documentation).
 pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
@@ -94,7 +101,8 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     let z = |v: i128| v as i64;
     let at_level = (x, z(level));
 
-    match src.choose(3) {
+    let case = if scope.case < 3 { scope.case } else { src.choose(3) };
+    match case {
         0 => {
             // The start: the header, the rapid to L, then peck 1 with the tool at L.
             src.assume(i == 1)?;
@@ -153,16 +161,42 @@ cycle_harness::property! {
         rules: ["G83.FORMAT", "G83.PECK", "PRJ.MAXPASS"],
         states: "The G83 cycle by induction over its states (k·Q and ⌈D/Q⌉ stubbed by smt/ lemma 14's table, checked by the drivers): refused exactly in the register's order (no depth, then K > max_passes); counts K pecks; from the start (header, to L), from any peck before the last (Q further, advancing, short of the bottom, up and down, then at peck k + 1) and from the last peck (exactly at the bottom, the dwell only when P > 0, home to I, None).",
         body: |src, scope| body(src, &scope),
-        /// The Kani harness. Unwind 4: `next_event`'s loop runs at most two phases per call (a
-        /// skipped rapid or dwell, then an event); the harness has no loop.
-        kani: test(FULL) { unwind: 4, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "not yet measured" },
+        /// The Kani harness of the peck before the last (START and LAST: below). Unwind 3:
+        /// `next_event`'s loop runs at most two phases per call (skipped rapid or dwell, then an event); the harness has no loop.
+        kani: test(STEP) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "not yet measured" },
         tests {
             /// Positions, R and the bottom in ±3, Q 0…3 (each draw's 3 smallest and largest).
-            fn g83_peck_step_exhaustive_small = exhaustive(3, 3_000_000) on Scope { max_pos: 3, max_len: 3 };
+            fn g83_peck_step_exhaustive_small = exhaustive(3, 3_000_000) on Scope { max_pos: 3, max_len: 3, case: 3 };
             /// The edges of the legal ranges.
             fn g83_peck_step_exhaustive_edges = exhaustive(2, 2_000_000) on FULL;
             /// The full ranges; and small ones, where cycles have few pecks.
-            fn g83_peck_step_random = random(0x5eed_0831, 2) on FULL, random(0x5eed_0832, 2) on Scope { max_pos: 40, max_len: 12 };
+            fn g83_peck_step_random = random(0x5eed_0831, 2) on FULL, random(0x5eed_0832, 2) on Scope { max_pos: 40, max_len: 12, case: 3 };
+        }
+    }
+}
+
+cycle_harness::property! {
+    pub const START_PROPERTY = g83_peck_start in crate::PROPERTIES {
+        rules: ["G83.FORMAT", "G83.PECK", "PRJ.MAXPASS"],
+        states: "The G83 cycle's start (the induction base of g83_peck_step; stubs as there): refused exactly in the register's order, the count K, then the header, the rapid to L and the state at peck 1.",
+        body: |src, scope| body(src, &scope),
+        /// The Kani harness of the start (unwind as `g83_peck_step`).
+        kani: test(START) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "not yet measured" },
+        tests {
+            fn g83_peck_start_random = random(0x5eed_0833, 4) on START, random(0x5eed_0834, 4) on Scope { max_pos: 40, max_len: 12, case: 0 };
+        }
+    }
+}
+
+cycle_harness::property! {
+    pub const LAST_PROPERTY = g83_peck_last in crate::PROPERTIES {
+        rules: ["G83.FORMAT", "G83.PECK", "PRJ.MAXPASS"],
+        states: "The G83 cycle's last peck (the rest of g83_peck_step's induction; stubs as there): one feed exactly to the bottom, advancing; the dwell only when P > 0; home to I; None.",
+        body: |src, scope| body(src, &scope),
+        /// The Kani harness of the last peck (unwind as `g83_peck_step`).
+        kani: test(LAST) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "not yet measured" },
+        tests {
+            fn g83_peck_last_random = random(0x5eed_0835, 4) on LAST, random(0x5eed_0836, 4) on Scope { max_pos: 40, max_len: 12, case: 2 };
         }
     }
 }

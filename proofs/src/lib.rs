@@ -72,4 +72,8 @@ pub const PROPERTIES: &[Property] = &[
     g74_peck_step::PROPERTY,
     g83_peck_step::PROPERTY,
     peck_toward::PROPERTY,
+    g74_peck_step::START_PROPERTY,
+    g74_peck_step::LAST_PROPERTY,
+    g83_peck_step::START_PROPERTY,
+    g83_peck_step::LAST_PROPERTY,
 ];

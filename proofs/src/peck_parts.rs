@@ -8,8 +8,8 @@
 //! harness needs of one of them (the pecks, or the columns): the count K and the products
 //! S(m) = m·len for the three m = m₀, m₀ + 1, m₀ + 2 one step asks about.
 //!
-//! **Under Kani** K and S(m₀) are drawn symbolic, S(m₀ + 1) = S(m₀) + len, S(m₀ + 2) = S(m₀ + 1)
-//! + len, under the assumptions [`Line::spec`] lists — each an instance of smt/ lemma 14
+//! **Under Kani** K and S(m₀) are drawn symbolic, S(m₀ + 1) = S(m₀) + len and
+//! S(m₀ + 2) = S(m₀ + 1) + len, under the assumptions [`Line::spec`] lists — each an instance of smt/ lemma 14
 //! (`14_peck_count.smt2`: for total ≥ 1, len ≥ 1 and K = ⌈total / len⌉, m·len ≥ total ⇔ m ≥ K,
 //! K ≥ 1, (K − 1)·len < total ≤ K·len) — and `span` and `ceil_div` are stubbed by lookups in the
 //! lines ([`stubs`]), which *assert* that the cycle asks for nothing else (0·len and 1·len are
