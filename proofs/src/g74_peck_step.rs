@@ -33,7 +33,7 @@
 //! of a real `cycle` — the state `next_event` itself reaches, as the steps above show. `fill`
 //! (the batched writer) is not covered: the impl and fill tests compare it with `next_event`.
 
-use crate::peck_parts::{along, consistent, Line};
+use crate::peck_parts::{along, consistent, trusted, Line};
 use crate::source::{Outcome, Source};
 use crate::{check, cover};
 use cycle_impl::g74::{cycle, PeckCode, Words};
@@ -155,6 +155,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     check!(src, cy0.counts() == (k, columns), "G74.PECK/G74.COLUMN: ⌈D/peck⌉ pecks per column, ⌈T/step⌉ + 1 columns (1 without T)");
 
     // A state: column j, peck i (the drivers' draws fall in the real counts).
+    trusted(src, k >= 1 && columns >= 1, "lemma 14: K ≥ 1 (and C ≥ 1)")?;
     let j = src.bounded_u64(0, columns - 1);
     let i = src.bounded_u64(1, k);
     let pecks = pecks.table(src, i - 1)?;

@@ -24,7 +24,7 @@
 //! every case). `Cycle::at_peck` (doc-hidden in impl) sets the peck and the phase of a real
 //! `cycle`. `fill` is not covered (the impl and fill tests compare it with `next_event`).
 
-use crate::peck_parts::{along, Line};
+use crate::peck_parts::{along, trusted, Line};
 use crate::source::{Outcome, Source};
 use crate::{check, cover};
 use cycle_impl::g83::{cycle, Words};
@@ -91,6 +91,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     check!(src, want.is_none(), "G83: accepted exactly when the register accepts");
     check!(src, cy0.pecks() == k, "G83.PECK: ⌈D/Q⌉ pecks (1 without Q)");
 
+    trusted(src, k >= 1, "lemma 14: K ≥ 1")?;
     let i = src.bounded_u64(1, k);
     let pecks = pecks.table(src, i - 1)?;
     #[cfg(kani)]
