@@ -182,7 +182,7 @@ cycle_harness::property! {
         states: "The G83 cycle's start (the induction base of g83_peck_step; stubs as there): refused exactly in the register's order, the count K, then the header, the rapid to L and the state at peck 1.",
         body: |src, scope| body(src, &scope),
         /// The Kani harness of the start (unwind as `g83_peck_step`).
-        kani: test(START) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "not yet measured" },
+        kani: proof(START) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], measured: "SUCCESSFUL (1572 checks, 35 unreachable: the other states'; 2/4 covers, 2 unreachable: the other states'), 71.6 s, 0.89 GB" },
         tests {
             fn g83_peck_start_random = random(0x5eed_0833, 4) on START, random(0x5eed_0834, 4) on Scope { max_pos: 40, max_len: 12, case: 0 };
         }

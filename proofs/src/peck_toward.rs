@@ -38,7 +38,7 @@ cycle_harness::property! {
         states: "The lemma behind the peck harnesses' stub of `toward`: for a direction dir ∈ {−1, 0, 1} and every i64 len, toward(dir, len) is len, 0 or −len (saturating).",
         body: |src, scope| body(src, &scope),
         /// The Kani harness (no loop).
-        kani: test(()) { why: "not yet measured" },
+        kani: proof(()) { measured: "SUCCESSFUL (5 checks; 1/1 covers), 0.7 s, 0.90 GB" },
         tests {
             /// Every direction with each len's 200 smallest and largest values.
             fn peck_toward_exhaustive = exhaustive(200, 2_000_000) on ();
