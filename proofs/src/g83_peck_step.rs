@@ -195,7 +195,7 @@ cycle_harness::property! {
         states: "The G83 cycle's last peck (the rest of g83_peck_step's induction; stubs as there): one feed exactly to the bottom, advancing; the dwell only when P > 0; home to I; None.",
         body: |src, scope| body(src, &scope),
         /// The Kani harness of the last peck (unwind as `g83_peck_step`).
-        kani: test(LAST) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "not yet measured" },
+        kani: proof(LAST) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], measured: "SUCCESSFUL (1572 checks, 22 unreachable: the other states'; 3/4 covers, 1 unreachable: the other states'), 188.4 s, 1.05 GB" },
         tests {
             fn g83_peck_last_random = random(0x5eed_0835, 4) on LAST, random(0x5eed_0836, 4) on Scope { max_pos: 40, max_len: 12, case: 2 };
         }
