@@ -164,7 +164,7 @@ cycle_harness::property! {
         body: |src, scope| body(src, &scope),
         /// The Kani harness of the peck before the last (START and LAST: below). Unwind 3:
         /// `next_event`'s loop runs at most two phases per call (skipped rapid or dwell, then an event); the harness has no loop.
-        kani: proof(STEP) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], measured: "SUCCESSFUL (1572 checks, 17 unreachable: the other states'; 2/4 covers: 1 unreachable, the other states', and the cover of no Q unsatisfiable here — without Q K = 1, no peck before the last), 172.7 s, not measured alone (same run; the other two peaked at 0.89 and 1.05 GB)" },
+        kani: proof(STEP) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], measured: "SUCCESSFUL (1572 checks, 17 unreachable: the other states'; 2/4 covers: 1 unreachable, the other states', and the cover of no Q unsatisfiable here — without Q K = 1, no peck before the last), 172.7 s, not measured alone (same run; the other two harnesses peaked at 0.89 and 1.05 GB)" },
         tests {
             /// Positions, R and the bottom in ±3, Q 0…3 (each draw's 3 smallest and largest).
             fn g83_peck_step_exhaustive_small = exhaustive(3, 3_000_000) on Scope { max_pos: 3, max_len: 3, case: 3 };
