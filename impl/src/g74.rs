@@ -55,7 +55,7 @@ enum Phase {
 }
 
 /// A G74/G75 cycle whose checks passed.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Cycle {
     code: PeckCode,
     /// A in the frame: (p, s).
@@ -87,15 +87,35 @@ pub struct Cycle {
 }
 
 /// `base + dir·min(i·len, max)`: the i-th point from `base` toward `dir`, the last exactly at
-/// `base + dir·max`.
-fn nth(base: i64, dir: i64, i: u64, len: i64, max: i64) -> i64 {
-    let off = u128::from(i).saturating_mul(len.unsigned_abs().into()).min(max.unsigned_abs().into());
+/// `base + dir·max`. Public for the proofs (cycle-proofs `peck_step`), not API.
+#[doc(hidden)]
+pub fn nth(base: i64, dir: i64, i: u64, len: i64, max: i64) -> i64 {
+    let off = span(i, len).min(max.unsigned_abs().into());
     let off = i64::try_from(off).unwrap_or(i64::MAX);
-    base.saturating_add(dir.saturating_mul(off))
+    base.saturating_add(toward(dir, off))
 }
 
-/// ⌈a / b⌉ for a ≥ 0, b > 0.
-fn ceil_div(a: i64, b: i64) -> u64 {
+/// i·|len|, exact (a 64 × 64-bit product fits `u128`): the offset of the i-th peck or column
+/// before the clamp (G74.PECK, G74.COLUMN, G83.PECK). A function of its own so that the proofs
+/// can stand the product in by what the SMT lemmas prove of it (cycle-proofs `peck_parts`);
+/// not API.
+#[doc(hidden)]
+pub fn span(i: u64, len: i64) -> u128 {
+    u128::from(i) * u128::from(len.unsigned_abs())
+}
+
+/// dir·len, saturating, for a direction dir ∈ {−1, 0, 1}: a length along an axis. A function of
+/// its own so that the proofs can stand the product in by what `peck_toward` proves of it
+/// (cycle-proofs); not API.
+#[doc(hidden)]
+pub fn toward(dir: i64, len: i64) -> i64 {
+    dir.saturating_mul(len)
+}
+
+/// ⌈a / b⌉ for a ≥ 0, b > 0: the pecks of a column, the column steps (G74/G75) and G83's pecks.
+/// Public for the proofs (cycle-proofs `peck_parts`), not API.
+#[doc(hidden)]
+pub fn ceil_div(a: i64, b: i64) -> u64 {
     let (a, b) = (a.unsigned_abs(), b.unsigned_abs().max(1));
     a / b + u64::from(!a.is_multiple_of(b))
 }
@@ -185,6 +205,21 @@ pub fn cycle(code: PeckCode, a: (i64, i64), w: &Words, max_passes: u32, line: u3
     })
 }
 
+/// For the proofs (cycle-proofs `g74_peck_step`), not API: the counts, and the cycle resumed at
+/// a peck — the state `next_event` is in before it cuts peck `i` of column `col`.
+#[doc(hidden)]
+impl Cycle {
+    /// The pecks per column and the columns, as `cycle` counted them.
+    pub fn counts(&self) -> (u64, u64) {
+        (self.pecks, self.columns)
+    }
+
+    /// This cycle about to cut peck `i` (1-based) of column `col` (0-based).
+    pub fn at_peck(&self, col: u64, i: u64) -> Cycle {
+        Cycle { col, peck_i: i, phase: Phase::Peck, ..*self }
+    }
+}
+
 impl Cycle {
     /// The step-axis position of column `j` (G74.COLUMN).
     fn column(&self, j: u64) -> i64 {
@@ -220,7 +255,7 @@ impl Cycle {
                 }
                 Phase::Return => {
                     self.phase = Phase::Peck;
-                    let back = self.peck_end(self.peck_i).saturating_sub(self.c.saturating_mul(self.e));
+                    let back = self.peck_end(self.peck_i).saturating_sub(toward(self.c, self.e));
                     self.peck_i += 1;
                     (back, s, true, return_rule)
                 }
@@ -229,7 +264,7 @@ impl Cycle {
                     if self.col == 0 || self.relief == 0 {
                         continue;
                     }
-                    let s = s.saturating_sub(self.relief_dir.saturating_mul(self.relief));
+                    let s = s.saturating_sub(toward(self.relief_dir, self.relief));
                     (self.peck_end(self.pecks), s, true, relief_rule)
                 }
                 Phase::Back => {
@@ -269,7 +304,7 @@ impl Cycle {
     fn write_pecks(&mut self, pos: &mut (i64, i64), out: &mut [Event]) -> usize {
         let (_, peck_rule, _, _, return_rule) = self.code.rules();
         let s = self.column(self.col);
-        let back = self.c.saturating_mul(self.e);
+        let back = toward(self.c, self.e);
         let mut at = *pos;
         let mut n = 0;
         while self.peck_i < self.pecks && out.len().saturating_sub(n) >= 2 {

@@ -10,11 +10,12 @@
 
 use crate::batch;
 use crate::emit::emit;
+use crate::g74::{ceil_div, span, toward};
 use cycle_vocab::{Alarm, AlarmCode, Dwell, Event, Move, Pass, PassKind, Rule};
 
 /// The drilling levels shared by G83 and G84: the current X, the initial level I, the R level
 /// and the bottom, the direction c (±1) and the depth |bottom − R level|.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Levels {
     pub x: i64,
     pub initial: i64,
@@ -56,7 +57,7 @@ enum Phase {
 }
 
 /// A G83 cycle whose checks passed.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Cycle {
     lv: Levels,
     /// The peck Q, increments (0: one feed to the bottom).
@@ -84,16 +85,26 @@ pub struct Words {
 pub fn cycle(a: (i64, i64), w: &Words, max_passes: u32, line: u32) -> Result<Cycle, Alarm> {
     let Words { r, bottom, q, dwell, feed } = *w;
     let lv = Levels::new(a, r, bottom, Rule::G83Format, line)?;
-    let pecks = if q <= 0 {
-        1
-    } else {
-        let (d, q) = (lv.depth.unsigned_abs(), q.unsigned_abs());
-        d / q + u64::from(!d.is_multiple_of(q))
-    };
+    let pecks = if q <= 0 { 1 } else { ceil_div(lv.depth, q) };
     if pecks > u64::from(max_passes) {
         return Err(Alarm::new(AlarmCode::TooManyPasses, Some(b'Q'), Rule::PrjMaxPass, line));
     }
     Ok(Cycle { lv, q, pecks, dwell, feed, peck_k: 1, phase: Phase::Header })
+}
+
+/// For the proofs (cycle-proofs `g83_peck_step`), not API: the count, and the cycle resumed at a
+/// peck — the state `next_event` is in before it cuts peck `k`.
+#[doc(hidden)]
+impl Cycle {
+    /// The pecks, as `cycle` counted them.
+    pub fn pecks(&self) -> u64 {
+        self.pecks
+    }
+
+    /// This cycle about to cut peck `k` (1-based).
+    pub fn at_peck(&self, k: u64) -> Cycle {
+        Cycle { peck_k: k, phase: Phase::Peck, ..*self }
+    }
 }
 
 impl Cycle {
@@ -102,10 +113,10 @@ impl Cycle {
         let off = if self.q <= 0 {
             self.lv.depth
         } else {
-            let off = u128::from(k).saturating_mul(self.q.unsigned_abs().into()).min(self.lv.depth.unsigned_abs().into());
+            let off = span(k, self.q).min(self.lv.depth.unsigned_abs().into());
             i64::try_from(off).unwrap_or(i64::MAX)
         };
-        self.lv.r_level.saturating_add(self.lv.c.saturating_mul(off))
+        self.lv.r_level.saturating_add(toward(self.lv.c, off))
     }
 
     /// The next event, updating the machine position; `None` when the cycle is done. PRJ.NOOP:

@@ -77,7 +77,9 @@ pub mod fixed;
 pub mod g73;
 /// G74/G75 peck cycles (public for the proof harness `peck_counts`).
 pub mod g74;
-mod g83;
+/// G83 peck drilling: public (hidden) only for the proof harness `g83_peck_step` (`cycle-proofs`).
+#[doc(hidden)]
+pub mod g83;
 mod g84;
 pub mod g162;
 /// Public (hidden) only so that the proof harnesses (`cycle-proofs`) can drive one G90/G94 cycle

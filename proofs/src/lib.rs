@@ -36,6 +36,10 @@ pub mod g90_envelope;
 pub mod peck_counts;
 pub mod g92_pullout_geometry;
 pub mod hold_retract;
+pub mod peck_parts;
+pub mod g74_peck_step;
+pub mod g83_peck_step;
+pub mod peck_toward;
 #[cfg(not(kani))]
 pub mod schedule_spec;
 
@@ -69,4 +73,11 @@ pub const PROPERTIES: &[Property] = &[
     g162_pitch::PROPERTY,
     g71_layer_step::PROPERTY,
     g73_passes::PROPERTY,
+    g74_peck_step::PROPERTY,
+    g83_peck_step::PROPERTY,
+    peck_toward::PROPERTY,
+    g74_peck_step::START_PROPERTY,
+    g74_peck_step::LAST_PROPERTY,
+    g83_peck_step::START_PROPERTY,
+    g83_peck_step::LAST_PROPERTY,
 ];

@@ -126,3 +126,11 @@ fn negative_control_count_floor() {
     let floor = mutate("11_rough_count", "ceil_div", "(define-fun ceil_div ((x Int) (m Int)) Int (div x m))");
     expect_sat("count with ⌊(T − b)/Δdmin⌋, lemma 11", &floor);
 }
+
+/// The peck count one too many (K = t div l + 1, the ceiling's tie at t mod l = 0 lost): lemma
+/// 16 `sat` (a multiple of the peck gets an extra peck of no depth).
+#[test]
+fn negative_control_peck_count_one_too_many() {
+    let more = edit("16_peck_count", "(ite (= (mod t l) 0) 0 1)", "1");
+    expect_sat("peck count t div l + 1, lemma 16", &more);
+}
