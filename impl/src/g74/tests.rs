@@ -201,3 +201,17 @@ fn fill_equals_the_iterator() {
         assert_fill_agrees(src, Config::default(), &sizes);
     }
 }
+
+/// `Cycle::fill` on its own writes `next_event`'s events, and writes while it has room: G74
+/// with columns and reliefs, and G75 (the stream would hide a `fill` that writes nothing).
+#[test]
+fn cycle_fill_on_its_own() {
+    use crate::g74::{cycle, Cycle, PeckCode, Words};
+    let sizes: Vec<usize> = (1..=12).chain([64]).collect();
+    let w = Words { end: (40_000, -5_000), di: 3_000, dk: 2_000, relief: 200, e: 500, feed: 500, relief_minus_z: false };
+    let g74 = cycle(PeckCode::G74, (20_000, 1_000), &w, 10_000, 2).unwrap();
+    let g75 = cycle(PeckCode::G75, (52_000, -10_000), &Words { end: (40_000, -20_000), ..w }, 10_000, 2).unwrap();
+    for (c, at) in [(g74, (20_000, 1_000)), (g75, (52_000, -10_000))] {
+        crate::tests::assert_cycle_fill(&c, at, Cycle::next_event, Cycle::fill, &sizes);
+    }
+}
