@@ -215,3 +215,32 @@ fn cycle_fill_on_its_own() {
         crate::tests::assert_cycle_fill(&c, at, Cycle::next_event, Cycle::fill, &sizes);
     }
 }
+
+/// The bulk path (`batch::Bulk`, what `fill` writes in place): in a column, before its last peck,
+/// `in_bulk` holds and `write_bulk` writes each peck with its return while two events fit; at the
+/// last peck it no longer holds. The seed's example 4: pecks to Z−3, −8, −12.
+#[test]
+fn bulk_writes_the_pecks_before_the_last() {
+    use crate::batch::Bulk;
+    use crate::g74::{cycle, PeckCode, Words};
+    use cycle_vocab::Event;
+    let w = Words { end: (0, -12_000), di: 0, dk: 5_000, relief: 0, e: 1_000, feed: 300_000, relief_minus_z: false };
+    let filler = Event::Move(Move::rapid(i64::MIN, i64::MIN, Rule::PrjTrace));
+    let (f, e, p) = (300_000, Rule::G74E, Rule::G74Peck);
+    // Room for three events: one peck and its return.
+    let mut c = cycle(PeckCode::G74, (0, 2_000), &w, 10_000, 2).unwrap();
+    let mut pos = (0, 2_000);
+    assert!(!c.in_bulk());
+    assert!(matches!(c.next_event(&mut pos), Some(Event::Pass(_))));
+    assert!(c.in_bulk());
+    let mut out = [filler; 3];
+    assert_eq!(c.write_bulk(&mut pos, &mut out), 2);
+    assert_eq!(out[..2], [Event::Move(Move::feed(0, -3_000, f, p)), Event::Move(Move::rapid(0, -2_000, e))]);
+    // Room for all: the second peck and return; the last peck is not bulk.
+    let mut out = [filler; 8];
+    assert!(c.in_bulk());
+    assert_eq!(c.write_bulk(&mut pos, &mut out), 2);
+    assert_eq!(out[..2], [Event::Move(Move::feed(0, -8_000, f, p)), Event::Move(Move::rapid(0, -7_000, e))]);
+    assert!(!c.in_bulk());
+    assert_eq!(c.next_event(&mut pos), Some(Event::Move(Move::feed(0, -12_000, f, p))));
+}
