@@ -9,6 +9,7 @@ use cycle_vocab::text::Trace;
 use cycle_vocab::{Config, Dialect, Grid, Increment, Units};
 use std::string::String;
 
+mod cycle_fill;
 mod front;
 mod readings;
 mod thread_points;
