@@ -9,6 +9,7 @@ use cycle_vocab::text::Trace;
 use cycle_vocab::{Config, Dialect, Grid, Increment, Units};
 use std::string::String;
 
+mod cycle_fill;
 mod front;
 mod readings;
 mod thread_points;
@@ -315,5 +316,37 @@ pub fn assert_fill_agrees(program: &str, config: Config, sizes: &[usize]) {
         };
         assert_eq!(got, want, "buffer of {size}\n{program}");
         assert_eq!(alarm, want_alarm, "buffer of {size}\n{program}");
+    }
+}
+
+/// One cycle's own `fill` against its `next_event`, from position `at`, for every buffer size:
+/// the same events, and every call with room writes at least one event until it says done. (The
+/// stream takes a cycle's events one at a time when its `fill` writes none, so a `fill` that
+/// never writes cannot be seen in the expander's trace; this sees it.)
+pub fn assert_cycle_fill<C: Clone>(
+    cycle: &C,
+    at: (i64, i64),
+    mut next: impl FnMut(&mut C, &mut (i64, i64)) -> Option<Event>,
+    mut fill: impl FnMut(&mut C, &mut (i64, i64), &mut [Event]) -> (usize, bool),
+    sizes: &[usize],
+) {
+    let (mut c, mut pos, mut want) = (cycle.clone(), at, Vec::new());
+    while let Some(e) = next(&mut c, &mut pos) {
+        want.push(e);
+    }
+    let want_end = pos;
+    for &size in sizes {
+        let filler = Event::Move(Move::rapid(i64::MIN, i64::MIN, Rule::PrjTrace));
+        let mut buffer = std::vec![filler; size];
+        let (mut c, mut pos, mut got) = (cycle.clone(), at, Vec::new());
+        loop {
+            let (n, done) = fill(&mut c, &mut pos, &mut buffer);
+            assert!(n > 0 || done, "buffer of {size}: nothing written, not done");
+            got.extend_from_slice(&buffer[..n]);
+            if done {
+                break;
+            }
+        }
+        assert_eq!((got.as_slice(), pos), (want.as_slice(), want_end), "buffer of {size}");
     }
 }

@@ -201,3 +201,46 @@ fn fill_equals_the_iterator() {
         assert_fill_agrees(src, Config::default(), &sizes);
     }
 }
+
+/// `Cycle::fill` on its own writes `next_event`'s events, and writes while it has room: G74
+/// with columns and reliefs, and G75 (the stream would hide a `fill` that writes nothing).
+#[test]
+fn cycle_fill_on_its_own() {
+    use crate::g74::{cycle, Cycle, PeckCode, Words};
+    let sizes: Vec<usize> = (1..=12).chain([64]).collect();
+    let w = Words { end: (40_000, -5_000), di: 3_000, dk: 2_000, relief: 200, e: 500, feed: 500, relief_minus_z: false };
+    let g74 = cycle(PeckCode::G74, (20_000, 1_000), &w, 10_000, 2).unwrap();
+    let g75 = cycle(PeckCode::G75, (52_000, -10_000), &Words { end: (40_000, -20_000), ..w }, 10_000, 2).unwrap();
+    for (c, at) in [(g74, (20_000, 1_000)), (g75, (52_000, -10_000))] {
+        crate::tests::assert_cycle_fill(&c, at, Cycle::next_event, Cycle::fill, &sizes);
+    }
+}
+
+/// The bulk path (`batch::Bulk`, what `fill` writes in place): in a column, before its last peck,
+/// `in_bulk` holds and `write_bulk` writes each peck with its return while two events fit; at the
+/// last peck it no longer holds. The seed's example 4: pecks to Z−3, −8, −12.
+#[test]
+fn bulk_writes_the_pecks_before_the_last() {
+    use crate::batch::Bulk;
+    use crate::g74::{cycle, PeckCode, Words};
+    use cycle_vocab::Event;
+    let w = Words { end: (0, -12_000), di: 0, dk: 5_000, relief: 0, e: 1_000, feed: 300_000, relief_minus_z: false };
+    let filler = Event::Move(Move::rapid(i64::MIN, i64::MIN, Rule::PrjTrace));
+    let (f, e, p) = (300_000, Rule::G74E, Rule::G74Peck);
+    // Room for three events: one peck and its return.
+    let mut c = cycle(PeckCode::G74, (0, 2_000), &w, 10_000, 2).unwrap();
+    let mut pos = (0, 2_000);
+    assert!(!c.in_bulk());
+    assert!(matches!(c.next_event(&mut pos), Some(Event::Pass(_))));
+    assert!(c.in_bulk());
+    let mut out = [filler; 3];
+    assert_eq!(c.write_bulk(&mut pos, &mut out), 2);
+    assert_eq!(out[..2], [Event::Move(Move::feed(0, -3_000, f, p)), Event::Move(Move::rapid(0, -2_000, e))]);
+    // Room for all: the second peck and return; the last peck is not bulk.
+    let mut out = [filler; 8];
+    assert!(c.in_bulk());
+    assert_eq!(c.write_bulk(&mut pos, &mut out), 2);
+    assert_eq!(out[..2], [Event::Move(Move::feed(0, -8_000, f, p)), Event::Move(Move::rapid(0, -7_000, e))]);
+    assert!(!c.in_bulk());
+    assert_eq!(c.next_event(&mut pos), Some(Event::Move(Move::feed(0, -12_000, f, p))));
+}

@@ -196,3 +196,48 @@ fn fill_equals_the_iterator() {
         assert_fill_agrees(src, Config::default(), &sizes);
     }
 }
+
+/// G83's and G84's own `fill` against their `next_event` (the stream would hide a `fill` that
+/// writes nothing): G83 with pecks and a dwell, without Q; G84 with and without a dwell.
+#[test]
+fn cycle_fill_on_its_own() {
+    use crate::g83::{cycle, Cycle, Words};
+    use crate::tests::assert_cycle_fill;
+    let sizes: Vec<usize> = (1..=12).chain([64]).collect();
+    let a = (0, 3_000);
+    let w = Words { r: -1_000, bottom: -10_000, q: 2_000, dwell: 500, feed: 1_000 };
+    for w in [w, Words { q: 0, dwell: 0, ..w }] {
+        assert_cycle_fill(&cycle(a, &w, 10_000, 2).unwrap(), a, Cycle::next_event, Cycle::fill, &sizes);
+    }
+    for w in [w, Words { dwell: 0, ..w }] {
+        let tap = crate::g84::cycle(a, &w, None, 2).unwrap();
+        assert_cycle_fill(&tap, a, crate::g84::Cycle::next_event, crate::g84::Cycle::fill, &sizes);
+    }
+}
+
+/// G83's bulk path (`batch::Bulk`, what `fill` writes in place): at a peck before the last,
+/// `in_bulk` holds and `write_bulk` writes the peck, the rapid up to the R level and the rapid
+/// down while three events fit; at the last peck it no longer holds.
+#[test]
+fn bulk_writes_the_pecks_before_the_last() {
+    use crate::batch::Bulk;
+    use crate::g83::{cycle, Words};
+    // From Z0: R level Z0.5, pecks of 2 mm to Z−1.5 and −3.5 (the last).
+    let w = Words { r: 500, bottom: -3_500, q: 2_000, dwell: 0, feed: 1_000 };
+    let mut c = cycle((0, 0), &w, 10_000, 1).unwrap();
+    let mut pos = (0, 0);
+    assert!(!c.in_bulk());
+    assert!(matches!(c.next_event(&mut pos), Some(Event::Pass(_))));
+    assert!(!c.in_bulk());
+    assert_eq!(c.next_event(&mut pos), Some(Event::Move(Move::rapid(0, 500, Rule::G83Peck))));
+    assert!(c.in_bulk());
+    let filler = Event::Move(Move::rapid(i64::MIN, i64::MIN, Rule::PrjTrace));
+    let mut out = [filler; 2];
+    assert_eq!(c.write_bulk(&mut pos, &mut out), 0, "three events do not fit in two");
+    let mut out = [filler; 4];
+    assert_eq!(c.write_bulk(&mut pos, &mut out), 3);
+    let r = Rule::G83Peck;
+    assert_eq!(out[..3], [Move::feed(0, -1_500, 1_000, r), Move::rapid(0, 500, r), Move::rapid(0, -1_500, r)].map(Event::Move));
+    assert!(!c.in_bulk());
+    assert_eq!(c.next_event(&mut pos), Some(Event::Move(Move::feed(0, -3_500, 1_000, r))));
+}
