@@ -298,9 +298,9 @@ cycle_harness::property! {
         rules: ["G73.DEPTH", "G73.PATH", "G73.COUNT", "PRJ.MAXPASS"],
         states: "The G73 passes at every pass n: TOO MANY PASSES before motion exactly when d > max_passes; pass n's header and the contour translated by T(n) = (2·round(Δi(d − n)/d) + Δu, round(Δk(d − n)/d) + Δw); pass n + 1 exactly when n < d, its offset never larger, toward the allowance; pass d exactly at the allowance, then the rapid to A and the end: exactly d passes.",
         body: |src, scope| body(src, &scope),
-        /// The Kani harness (`-Z stubbing`: `escape`, the contour); a TEST until a run reports
-        /// SUCCESSFUL (a proof harness with `kani-attempts`).
-        kani: test(KANI) { unwind: 6, stubs: [cycle_impl::g73::escape => stubs::escape_spec, cycle_impl::contour::Contour::len => stubs::contour_len, cycle_impl::contour::Contour::get => stubs::contour_get], why: "no verdict: Kani 0.61.0 / CBMC 6.4.0, CaDiCaL 1.5.3, with unwind 9, a loop in the harness and pass 1 taken from `new` (whose refusal branch leaves CBMC not knowing the phase), symbolic execution 162 s (1.14 M steps), 2.55 M variables, 8.56 M clauses, about 25 queries answered, no verdict in 900 s (CBMC 3.8 GB by `ps`); the leaner harness at this commit (no loop of its own, unwind 6, pass 1 re-entered): symbolic execution 288 s (521 k steps, load about 12), 1.31 M variables, 4.15 M clauses, the first query 61 s, stopped by hand at 11 min (its run shared one 900 s timeout with `g71_layer_step`'s; CBMC 2.0 GB by `ps`)" },
+        /// The Kani harness (`-Z stubbing`: `escape`, the contour): SUCCESSFUL at 7d2b095 (the
+        /// escape table under smt/ lemma 15); one pass too many planted in `end_pass` FAILED.
+        kani: proof(KANI) { unwind: 6, stubs: [cycle_impl::g73::escape => stubs::escape_spec, cycle_impl::contour::Contour::len => stubs::contour_len, cycle_impl::contour::Contour::get => stubs::contour_get], measured: "SUCCESSFUL (1250 checks; 6/6 covers), 440.1 s, 2.22 GB" },
         tests {
             /// A at 0 (every position is A plus offsets: translation moves all alike), the element
             /// within ±1, lengths ≤ 1, d and max_passes ≤ 4: every combination.
