@@ -50,7 +50,6 @@ use crate::{check, cover};
 use cycle_impl::contour::{Contour, Element, Kind};
 use cycle_impl::rough::{Axis, Roughing, Words};
 use cycle_impl::MAX_LENGTH;
-use cycle_vocab::{AlarmCode, Rule};
 
 /// The ranges a run draws from.
 #[derive(Clone, Copy, Debug)]
@@ -174,20 +173,9 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     let layers = cuts && d0 >= 1;
     let r = Roughing::new(axis, start, &words, &contour, max_passes, line);
     let too_many = layers && q0 >= i128::from(max_passes);
-    let cycle = match r {
-        Err(al) => {
-            check!(src, too_many, "PRJ.MAXPASS: refused only when layer max_passes exists");
-            check!(
-                src,
-                al.code == AlarmCode::TooManyPasses && al.word == Some(word) && al.rule == Rule::PrjMaxPass && al.line == line,
-                "PRJ.MAXPASS: TOO MANY PASSES on U (G71) / W (G72), on the cycle block's line"
-            );
-            cover!(src, true, "refused: too many passes");
-            return Ok(());
-        }
-        Ok(cycle) => cycle,
+    let Some(cycle) = crate::g71_layers::admitted(src, r, too_many, word, line)? else {
+        return Ok(());
     };
-    check!(src, !too_many, "PRJ.MAXPASS: a cycle with max_passes layers or more is refused before motion");
     // K as `new` stored it for the run (`count`'s value there; calling `count` again on the
     // returned cycle would make CBMC unroll its element loop to the unwind bound: the contour's
     // length is no longer a constant to it there).

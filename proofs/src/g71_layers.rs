@@ -58,12 +58,12 @@
 //! before the solver), and `cut_on` is called only on the harness's G01 along the cut axis,
 //! where the real function returns b₀ (its `den == 0` branch). The drivers run the real ones.
 
-use crate::source::{Outcome, Source};
+use crate::source::{Outcome, Source, Stop};
 use crate::{check, cover};
 use cycle_impl::contour::{Contour, Element, Kind};
 use cycle_impl::rough::{Axis, Roughing, Words};
 use cycle_impl::MAX_LENGTH;
-use cycle_vocab::{AlarmCode, Event, PassKind, Rule};
+use cycle_vocab::{Alarm, AlarmCode, Event, PassKind, Rule};
 
 /// The ranges a run draws from.
 #[derive(Clone, Copy, Debug)]
@@ -91,6 +91,34 @@ pub const FULL: Scope = Scope { max_pos: 1 << 60, max_len: MAX_LENGTH, max_passe
 
 /// Positions within ±2^14, so that runs of many layers occur (a random driver's scope).
 pub const NEAR: Scope = Scope { max_pos: 1 << 14, max_len: 1 << 8, max_passes: 1_000_000, max_other: MAX_LENGTH, max_events: 5_000_004, trace: true };
+
+/// PRJ.MAXPASS at [`Roughing::new`] (for this harness and `g71_layer_step`): refused exactly
+/// when layer `max_passes` exists (`too_many`), with TOO MANY PASSES on U (G71) / W (G72) on the
+/// cycle block's line; `None` after a refusal, which ends the body.
+pub fn admitted<S: Source>(
+    src: &mut S,
+    r: Result<Roughing, Alarm>,
+    too_many: bool,
+    word: u8,
+    line: u32,
+) -> Result<Option<Roughing>, Stop> {
+    match r {
+        Err(al) => {
+            check!(src, too_many, "PRJ.MAXPASS: refused only when layer max_passes exists");
+            check!(
+                src,
+                al.code == AlarmCode::TooManyPasses && al.word == Some(word) && al.rule == Rule::PrjMaxPass && al.line == line,
+                "PRJ.MAXPASS: TOO MANY PASSES on U (G71) / W (G72), on the cycle block's line"
+            );
+            cover!(src, true, "refused: too many passes");
+            Ok(None)
+        }
+        Ok(cycle) => {
+            check!(src, !too_many, "PRJ.MAXPASS: a cycle with max_passes layers or more is refused before motion");
+            Ok(Some(cycle))
+        }
+    }
+}
 
 /// The harness body (see the module documentation).
 pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
@@ -156,20 +184,9 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     let r = Roughing::new(axis, start, &words, &contour, max_passes, line);
     // Layer number `max_passes` exists: max_passes·step < D (and the cut is positive).
     let too_many = cuts && i128::from(max_passes) * step < d0;
-    let mut cycle = match r {
-        Err(al) => {
-            check!(src, too_many, "PRJ.MAXPASS: refused only when layer max_passes exists");
-            check!(
-                src,
-                al.code == AlarmCode::TooManyPasses && al.word == Some(word) && al.rule == Rule::PrjMaxPass && al.line == line,
-                "PRJ.MAXPASS: TOO MANY PASSES on U (G71) / W (G72), on the cycle block's line"
-            );
-            cover!(src, true, "refused: too many passes");
-            return Ok(());
-        }
-        Ok(cycle) => cycle,
+    let Some(mut cycle) = admitted(src, r, too_many, word, line)? else {
+        return Ok(());
     };
-    check!(src, !too_many, "PRJ.MAXPASS: a cycle with max_passes layers or more is refused before motion");
 
     if !scope.trace {
         // The schedule itself: K = count (what `new` compared with max_passes), a_k = layer_at(k).
