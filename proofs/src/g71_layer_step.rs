@@ -2,8 +2,7 @@
 //! schedule of the production cycle (`cycle_impl::rough::Roughing`: `new`, which counts the
 //! layers (`count`) and refuses before any motion, the count it keeps for the run, and
 //! `layer_at`, the layer coordinate every infeed of the run goes to), with its two arithmetic
-//! functions stubbed by their specifications. A TEST until a Kani run reports SUCCESSFUL
-//! (proofs/README.md: what was measured).
+//! functions stubbed by their specifications. A Kani proof: SUCCESSFUL (proofs/README.md).
 //!
 //! **Property.** With s the direction toward the contour (sign of A′.a − A.a), step = Δd·p_a
 //! (p_a = 2 for G71, whose layer axis X counts diameters; 1 for G72), D = D(Q₀) = s·(Q₀.a − A.a)
@@ -35,9 +34,12 @@
 //! asks for on this contour, which the stub asserts; `cycle_impl::rough::layer_offset` (k·step)
 //! by a table o(k₀), o(k₀ + 1) = o(k₀) + step for the layer k₀ drawn (the stub asserts no other
 //! layer is asked for). The tables' assumptions ([`q_spec`], [`o_spec`]): q(D) ≥ q(D − 1) ≥ 0;
-//! o(k₀) ≥ step, o(1) = step; o(m) ≤ D − 1 ⇔ m ≤ q(D − 1) for m = k₀, k₀ + 1 — integer facts
-//! (distributivity; ⌊x/y⌋ is the largest m with m·y ≤ x: smt/ lemma 14) that the drivers check
-//! on every case against the exact products and the exact floor (by its bracket).
+//! q(x) ≥ 1 ⇔ step ≤ x and q(x) ≤ x, for x = D − 1 and D (the floor at m = 1, linear: without
+//! it the table could hand `count` a quotient ≥ 1 where the real one is 0 — the counterexample
+//! of the FAILED run); o(k₀) ≥ step, o(1) = step; o(m) ≤ D − 1 ⇔ m ≤ q(D − 1) for m = k₀,
+//! k₀ + 1 — integer facts (distributivity; ⌊x/y⌋ is the largest m with m·y ≤ x, 0 ≤ ⌊x/y⌋ ≤ x:
+//! smt/ lemma 14), the linear instances of the floor bracket q·step ≤ x < (q + 1)·step, which
+//! the drivers check in full on every case against the exact products and the exact floor.
 //!
 //! **Kani bounds.** A, A′, B anywhere in ±2^60, Δd 1…N, e 0…N, allowances ±N, any feed and line,
 //! `max_passes` 1…10^6 (its whole range), every layer k₀. Loops: `count`'s two elements and its
@@ -71,10 +73,17 @@ pub const NEAR: Scope = Scope { max_pos: 1 << 14, max_len: 1 << 8, max_passes: 1
 /// The specification of `layers_within`'s table (assumed under Kani, checked by the drivers):
 /// q0 = q(D − 1), q1 = q(D), for D ≥ 1.
 #[allow(clippy::int_plus_one)] // x = D − 1, as lemma 14 states it
-pub fn q_spec(d0: i128, step: i128, q0: i128, q1: i128) -> [(bool, &'static str); 2] {
+pub fn q_spec(d0: i128, step: i128, q0: i128, q1: i128) -> [(bool, &'static str); 4] {
     [
         (d0 < 1 || (q0 >= 0 && q1 >= q0), "⌊x/step⌋ ≥ 0 for x ≥ 0, monotone in x"),
-        // The drivers see the exact bracket; under Kani it enters only through `o_spec`.
+        // Lemma 14 at m = 1 (1·step = step: no product): q ≥ 1 exactly when step ≤ x — so q = 0
+        // whenever x < step, the case `count` reaches without a layer (the cut not positive,
+        // D ≤ step) and returns min(q(D − 1), max_passes) as it stands.
+        (d0 < 1 || ((q0 >= 1) == (step <= d0 - 1) && (q1 >= 1) == (step <= d0)), "lemma 14 at m = 1: q ≥ 1 ⇔ step ≤ x"),
+        // q ≤ x (q·step ≤ x with step ≥ 1), so the table stays within the real quotients' range.
+        (d0 < 1 || (q0 <= d0 - 1 && q1 <= d0), "⌊x/step⌋ ≤ x for step ≥ 1"),
+        // The exact bracket (products of two symbolic values) only in the drivers; under Kani the
+        // rows above and `o_spec`'s at k₀, k₀ + 1 are its linear instances.
         (d0 < 1 || cfg!(kani) || (q0 * step <= d0 - 1 && d0 - 1 < (q0 + 1) * step && q1 * step <= d0 && d0 < (q1 + 1) * step), "q is the floor: q·step ≤ x < (q + 1)·step"),
     ]
 }
@@ -271,9 +280,8 @@ cycle_harness::property! {
         rules: ["G71.LAYER", "G72.LAYER", "PRJ.MAXPASS"],
         states: "The G71/G72 layer schedule below the contour geometry, for every layer k: TOO MANY PASSES before motion exactly when layer max_passes exists; the count K the closed form ⌈D/step⌉ − 1 (0 when the cut is not positive), below max_passes; layer k at A.a + s·k·Δd·p_a, layer k + 1 exactly one step further toward the contour, every layer strictly between A and Q₀, layer K + 1 at or past Q₀.",
         body: |src, scope| body(src, &scope),
-        /// The Kani harness (`-Z stubbing`: the contour, `layers_within`, `layer_offset`, `cut_on`); a TEST
-        /// until a run reports SUCCESSFUL (a proof harness with `kani-attempts`).
-        kani: test(KANI) { unwind: 23, stubs: [cycle_impl::contour::Contour::get => crate::g71_layers::stubs::contour_get, cycle_impl::contour::Contour::len => crate::g71_layers::stubs::contour_len, cycle_impl::contour::Contour::last => crate::g71_layers::stubs::contour_last, cycle_impl::rough::layers_within => stubs::layers_within_spec, cycle_impl::rough::layer_offset => stubs::layer_offset_spec, cycle_impl::rough::cut_on => stubs::cut_on_unreached], why: "Kani FAILED on the harness, not on the code as far as measured: re-run at 7d2b095 (its own 900 s, the load falling from about 13 to 5) with CaDiCaL 1.5.3, VERIFICATION FAILED in 156.7 s on 2 checks, `PRJ.MAXPASS: refused only when layer max_passes exists` and `G71.LAYER: K is the closed form` (0.33 M variables, 1.15 M clauses); every driver passes. The counterexample (`--concrete-playback=print`, which needed more than 11 GiB; run with 16 GiB): G71, A = (1 152 921 382 468 714 496, 576 460 752 214 671 680), Q₀ on X 224 919 552 below A.x, Δd 939 524 128 (step 1 879 048 256), allowances U −781 975 552, W −476 036 000 (the cut along Z not positive), max_passes 285 748, and the drawn quotient q(D − 1) = 810 101 where the real ⌊(D − 1)/step⌋ = ⌊1 006 895 103 / 1 879 048 256⌋ = 0: `new` refused with that quotient. Under Kani the table enters only through `o_spec` at layer k₀, so at the refusal q is unconstrained — a quotient the real `layers_within` cannot give; the next attempt assumes the floor bracket under Kani too (lemma 14). Whether the code should ask for the quotient when the cut along the other axis is not positive is left to the drivers, which pass; earlier, no verdict: at this commit (products by s, c = ±1 written as negations), Kani 0.61.0 / CBMC 6.4.0, CaDiCaL 1.5.3: 63 k steps, 0.33 M variables, 1.15 M clauses, 25 queries answered in 6 min (0.1–47 s each), the 26th open for 6 min, stopped by hand at 14 min of the run (CBMC 0.42 GB by `ps`; load about 12); before: (1) with `count` called again on the cycle `new` returned, CBMC's symbolic execution no longer knew the contour's length and unrolled the element loop (with the bisection inside) to the unwind bound: 9.3 GB in 4.5 min, stopped; (2) with K read by `layer_count`: 64 k steps, 1.32 M variables, 6.68 M clauses, 24 queries answered in 4 min, the 25th open over 5 min, stopped at 8.6 min (CBMC 1.0 GB by `ps`) — the products by the direction s = ±1 in `reach`, `layer_at` and `cuts`, since written as a negation and a sign comparison" },
+        /// The Kani proof (`-Z stubbing`: the contour, `layers_within`, `layer_offset`, `cut_on`).
+        kani: proof(KANI) { unwind: 23, stubs: [cycle_impl::contour::Contour::get => crate::g71_layers::stubs::contour_get, cycle_impl::contour::Contour::len => crate::g71_layers::stubs::contour_len, cycle_impl::contour::Contour::last => crate::g71_layers::stubs::contour_last, cycle_impl::rough::layers_within => stubs::layers_within_spec, cycle_impl::rough::layer_offset => stubs::layer_offset_spec, cycle_impl::rough::cut_on => stubs::cut_on_unreached], measured: "SUCCESSFUL (985 checks, 14 unreachable; 6/6 covers), 333.3 s, 0.93 GB" },
         tests {
             /// Positions ±6, Δd and allowances ≤ 2, max_passes ≤ 12 (each draw's 2 values at each end).
             fn g71_layer_step_exhaustive = exhaustive(2, 4_000_000) on Scope { max_pos: 6, max_len: 2, max_passes: 12 };

@@ -33,7 +33,7 @@
 //! of a real `cycle` — the state `next_event` itself reaches, as the steps above show. `fill`
 //! (the batched writer) is not covered: the impl and fill tests compare it with `next_event`.
 
-use crate::peck_parts::{along, consistent, trusted, Line};
+use crate::peck_parts::{along, consistent, counts_agree, trusted, Line};
 use crate::source::{Outcome, Source};
 use crate::{check, cover};
 use cycle_impl::g74::{cycle, PeckCode, Words};
@@ -117,6 +117,9 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     let pecks = Line::count(src, depth as u64, peck as u64);
     let cols = Line::count(src, travel as u64, step as u64);
     let (k, columns) = (pecks.count, if travel == 0 { 1 } else { cols.count.saturating_add(1) });
+    // The pecks' and the columns' lines may be one (total, len): `ceil_div`'s stub then answers
+    // both from the pecks' line, so their counts must agree before the cycle counts.
+    counts_agree(src, &pecks, &cols)?;
     #[cfg(kani)]
     {
         crate::peck_parts::stubs::set(0, &pecks);

@@ -31,6 +31,7 @@ pub mod expander_envelope;
 pub mod g92_pullout;
 pub mod g162_split;
 pub mod g162_split_target;
+pub mod g162_split_step;
 pub mod g162_pitch;
 pub mod g90_envelope;
 pub mod peck_counts;
@@ -80,4 +81,7 @@ pub const PROPERTIES: &[Property] = &[
     g74_peck_step::LAST_PROPERTY,
     g83_peck_step::START_PROPERTY,
     g83_peck_step::LAST_PROPERTY,
+    g162_split_step::START_PROPERTY,
+    g162_split_step::PROPERTY,
+    g162_split_step::LAST_PROPERTY,
 ];

@@ -2,7 +2,7 @@
 ;
 ; Property: for x ≥ 0 and step ≥ 1, q = ⌊x/step⌋ (SMT-LIB `div`, the floor for step > 0; Rust's
 ;   `/` on x ≥ 0, step ≥ 1, impl/src/rough/mod.rs `layers_within`) is the largest m with
-;   m·step ≤ x: for every integer m, m·step ≤ x ⇔ m ≤ q; q ≥ 0; and q is monotone in x. With
+;   m·step ≤ x: for every integer m, m·step ≤ x ⇔ m ≤ q; 0 ≤ q ≤ x; and q is monotone in x. With
 ;   x = D − 1: the layers k ≥ 1 strictly before Q₀ (k·step < D) are exactly k = 1…⌊(D − 1)/step⌋,
 ;   the closed-form count ⌈D/step⌉ − 1 that `Roughing::count` computes. (k + 1)·step =
 ;   k·step + step (the layer offsets' step) is distributivity. Used by the Kani harness
@@ -27,6 +27,7 @@
 (assert (not (and
   (= (<= (* m step) x) (<= m layers))
   (>= layers 0)
+  (<= layers x)
   (<= layers (div y step))
   (= (* (+ m 1) step) (+ (* m step) step)))))
 (check-sat)

@@ -134,3 +134,10 @@ fn negative_control_peck_count_one_too_many() {
     let more = edit("16_peck_count", "(ite (= (mod t l) 0) 0 1)", "1");
     expect_sat("peck count t div l + 1, lemma 16", &more);
 }
+
+/// Full pass k taken as last even with a remainder (the split forgotten): lemma 17 `sat`.
+#[test]
+fn negative_control_full_pass_last_with_remainder() {
+    let wrong = edit("17_g162_full_pass", "(and (= m k) (= d 0))", "(= m k)");
+    expect_sat("full pass k last whatever D, lemma 17", &wrong);
+}

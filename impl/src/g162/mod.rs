@@ -194,6 +194,23 @@ impl Cycle {
         next(&split, prev)
     }
 
+    /// The current pass. (Public, hidden: the proof harnesses `g162_split_*` in cycle-proofs.)
+    #[doc(hidden)]
+    pub fn pass(&self) -> Step {
+        self.pass
+    }
+
+    /// This cycle with `pass` as the current pass and its five moves done (the state in which
+    /// `next_event` turns to the next pass). (Public, hidden: the proof harnesses `g162_split_*`
+    /// in cycle-proofs.)
+    #[doc(hidden)]
+    pub fn at_pass(mut self, pass: Step) -> Cycle {
+        self.begin(pass);
+        self.header = false;
+        self.step = STEPS;
+        self
+    }
+
     /// The segment (1…5, G162.PATH) of the last move emitted; after a pass header, 0. Read by
     /// the operator layer (G162.NOSTOP).
     pub fn segment(&self) -> u8 {
@@ -286,8 +303,8 @@ pub fn cycle(config: &Config, params: &Params, w: &Words, start: (i64, i64), lin
         sigma: s * w.a.signum(),
         split: w.split,
         norm: w.split.map_or((1, 1, 1), |sp| {
-            let (p, q) = (sp.depth.max(1).unsigned_abs(), sp.allowance.max(1).unsigned_abs());
-            (p, q, p / q)
+            let n = split::norm(&sp);
+            (n.p, n.q, n.k)
         }),
         thread: {
             let m = Move::variable_thread(0, 0, w.lead, angle, change, change_angle, floor, Rule::G162F);

@@ -42,7 +42,7 @@ pub struct Norm {
     pub d: u64,
 }
 
-fn norm(sp: &SplitParams) -> Norm {
+pub(super) fn norm(sp: &SplitParams) -> Norm {
     let p = sp.depth.max(1).unsigned_abs();
     let q = sp.allowance.max(1).unsigned_abs();
     let k = p / q;

@@ -89,3 +89,46 @@ fn split_properties_small() {
 mod programs;
 mod random;
 mod readings;
+
+/// `Cycle::at_pass(r)` (the proof harnesses' state constructor) is the state the running cycle
+/// reaches after pass r's five moves: from there it emits exactly the rest of the real run, for
+/// every pass of every P, Q ≤ 12.
+#[test]
+fn at_pass_is_the_state_after_a_pass() {
+    use cycle_vocab::Config;
+    let run = |mut c: Cycle, pos: &mut (i64, i64)| {
+        let mut out = Vec::new();
+        while let Some(e) = c.next_event(pos) {
+            out.push(e);
+        }
+        out
+    };
+    for p in 1..=12i64 {
+        for q in 1..=12i64 {
+            let w = Words { x: 1000, z: -5000, incremental: false, h: 100, split: Some(SplitParams { depth: p, allowance: q }), v: 10, taper: 40, a: 300, lead: 15_000, b: 0, i: 0, j: 360_000 };
+            let start = (2000, 0);
+            let c0 = cycle(&Config::default(), &crate::config::DEFAULTS, &w, start, 7).unwrap();
+            let mut pos = start;
+            let all = run(c0, &mut pos);
+            let (mut passes, mut checked) = (0, 0);
+            for (i, e) in all.iter().enumerate() {
+                let Event::Pass(h) = e else { continue };
+                passes += 1;
+                // The pass before this header, as the cycle held it: the headers are 6 events apart.
+                if let Some(Event::Pass(prev)) = i.checked_sub(6).map(|j| all[j]) {
+                    let mut c = c0;
+                    let mut at = start;
+                    while c.pass().n != prev.index {
+                        c.next_event(&mut at);
+                    }
+                    let r = c.pass();
+                    assert_eq!(run(c0.at_pass(r), &mut start.clone()), all[i..], "P{p} Q{q} after pass {}", r.n);
+                    checked += 1;
+                }
+                assert_eq!(h.index, passes);
+            }
+            assert_eq!(Some(passes), pass_count(&SplitParams { depth: p, allowance: q }, u32::MAX));
+            assert_eq!(checked + 1, passes, "P{p} Q{q}: every pass after the first checked");
+        }
+    }
+}
