@@ -1,4 +1,4 @@
-//! Harnesses `g162_split_start`, `g162_split_step`, `g162_split_last` (issue #33) — G162.PQ,
+//! Kani proofs `g162_split_start`, `g162_split_step`, `g162_split_last` (issue #33) — G162.PQ,
 //! G162.SPLIT, PRJ.MAXPASS: the passes of the production G162 cycle (`cycle_impl::g162::cycle`,
 //! `Cycle::next_event`, which steps its full passes itself and asks `split::next` for the rest)
 //! by induction over its passes, one harness per kind of state.
@@ -24,6 +24,15 @@
 //! By induction from pass 1 the cycle's passes are the register's 1…K: depths strictly
 //! increase, the last is exactly P, and their number K is within `max_passes`.
 //!
+//! **Two ways through, one body.** The drivers run it through the cycle (`Scope::cycle`:
+//! `cycle`, `Cycle::at_pass`, `next_event`, whose own fast path steps the full passes) and
+//! through the split's functions (`pass_count`, which `cycle` refuses on, `first`, which it
+//! begins with, and `next`). The Kani harnesses take the second: through the cycle, the start
+//! alone was 2.5 M variables and 12.2 M clauses (the `Cycle` behind the `Result` of `cycle`,
+//! its pass points) and reached no verdict in 900 s (proofs/README.md). The cycle's use of the
+//! split — the same passes, its fast path for full passes included — is left to these drivers
+//! and impl's `at_pass_is_the_state_after_a_pass`.
+//!
 //! **Stubs (Kani, `-Z stubbing`).** `split::norm` by the drawn k and D, with the base kQ drawn
 //! free of the product (`g162_split::draw_pkd`, `free_base`: a superset of the real (P, Q));
 //! `split::target` by `g162_split_target::target_spec` (a Kani proof); `split::full_depth`
@@ -38,7 +47,7 @@ use crate::g162_split::{draw_pkd, TailScope};
 use crate::peck_parts::trusted;
 use crate::source::{bounded_i64_upto, Outcome, Source, Stop};
 use crate::{check, cover};
-use cycle_impl::g162::{cycle, pass_count, SplitParams, Step, Words};
+use cycle_impl::g162::{cycle, first, next, pass_count, SplitParams, Step, Words};
 use cycle_impl::MAX_LENGTH;
 use cycle_vocab::{AlarmCode, Config, Event, Pass, PassKind, Rule};
 
@@ -49,15 +58,18 @@ pub struct Scope {
     pub max_len: i64,
     /// Which states: 0 the start, 1 a pass not at P, 2 the pass at P, 3 any of them.
     pub case: u32,
+    /// Through the cycle (`cycle`, `Cycle::at_pass`, `next_event`: the drivers) or through the
+    /// split's own functions (`pass_count`, `first`, `next`: the Kani harnesses).
+    pub cycle: bool,
 }
 
 /// The full legal ranges, every state.
-pub const FULL: Scope = Scope { max_len: MAX_LENGTH, case: 3 };
+pub const FULL: Scope = Scope { max_len: MAX_LENGTH, case: 3, cycle: true };
 
-/// The Kani harnesses: one per kind of state.
-pub const START: Scope = Scope { case: 0, ..FULL };
-pub const STEP: Scope = Scope { case: 1, ..FULL };
-pub const LAST: Scope = Scope { case: 2, ..FULL };
+/// The Kani harnesses: one per kind of state, on the split's functions.
+pub const START: Scope = Scope { case: 0, cycle: false, ..FULL };
+pub const STEP: Scope = Scope { case: 1, cycle: false, ..FULL };
+pub const LAST: Scope = Scope { case: 2, cycle: false, ..FULL };
 
 /// The full passes' depths o(n) = n·Q and o(n + 1) for a full pass 1 ≤ n ≤ k: drawn under
 /// Kani with lemma 17's facts assumed, exact under the drivers (which check those facts).
@@ -104,13 +116,24 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     params.max_passes = max_passes;
     let (start, line) = ((2000, 0), 7);
     let too_many = count > i64::from(max_passes);
-    let cy0 = match cycle(&Config::default(), &params, &w, start, line) {
-        Err(al) => {
-            check!(src, too_many && (al.code, al.word, al.rule, al.line) == (AlarmCode::TooManyPasses, Some(b'Q'), Rule::PrjMaxPass, line), "PRJ.MAXPASS: refused exactly when K > max_passes, TOO MANY PASSES on Q");
-            cover!(src, true, "refused: too many passes");
+    let cy0 = if scope.cycle {
+        match cycle(&Config::default(), &params, &w, start, line) {
+            Err(al) => {
+                check!(src, too_many && (al.code, al.word, al.rule, al.line) == (AlarmCode::TooManyPasses, Some(b'Q'), Rule::PrjMaxPass, line), "PRJ.MAXPASS: refused exactly when K > max_passes, TOO MANY PASSES on Q");
+                cover!(src, true, "refused: too many passes");
+                return Ok(());
+            }
+            Ok(cy) => Some(cy),
+        }
+    } else {
+        // What `cycle` refuses on (its step 5): `pass_count` against `max_passes`.
+        let want = if too_many { None } else { u32::try_from(count).ok() };
+        check!(src, pass_count(&sp, max_passes) == want, "PRJ.MAXPASS: pass_count is K when K ≤ max_passes, None above");
+        cover!(src, too_many, "refused: too many passes");
+        if too_many {
             return Ok(());
         }
-        Ok(cy) => cy,
+        None
     };
     check!(src, !too_many, "PRJ.MAXPASS: accepted only when K ≤ max_passes");
 
@@ -122,10 +145,16 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
     if case == 0 {
         check!(src, pass_count(&sp, u32::MAX) == u32::try_from(count).ok(), "PRJ.MAXPASS: pass_count is K");
         let want = if k >= 1 { full(1, q) } else { split(1, 1) };
-        let mut cy = cy0;
-        check!(src, cy.pass() == want, "G162.PQ / G162.SPLIT: pass 1 is Q, or t(1) when Q > P");
+        let got = match cy0 {
+            Some(mut cy) => {
+                let got = cy.pass();
+                check!(src, cy.next_event(&mut pos) == Some(header(want)), "the cycle begins with pass 1's header");
+                got
+            }
+            None => first(&sp),
+        };
+        check!(src, got == want, "G162.PQ / G162.SPLIT: pass 1 is Q, or t(1) when Q > P");
         check!(src, want.last == (want.depth == p) && want.depth >= 1 && want.depth <= p, "pass 1 is within P, last exactly at P");
-        check!(src, cy.next_event(&mut pos) == Some(header(want)), "the cycle begins with pass 1's header");
         cover!(src, k == 0, "Q > P: the first pass a split target");
         cover!(src, want.last, "a single pass");
         return Ok(());
@@ -144,19 +173,30 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
         src.assume(kept[s])?;
         (split(s, num[s]), 0)
     };
-    let mut cy = cy0.at_pass(r);
+    let mut cy = cy0.map(|c| c.at_pass(r));
     if case == 2 {
         src.assume(r.last)?;
         check!(src, i64::from(r.n) == count, "the pass at P is pass K");
-        check!(src, cy.next_event(&mut pos).is_none() && cy.next_event(&mut pos).is_none(), "nothing after the pass at P");
+        let ended = match &mut cy {
+            Some(cy) => cy.next_event(&mut pos).is_none() && cy.next_event(&mut pos).is_none(),
+            None => next(&sp, &r).is_none(),
+        };
+        check!(src, ended, "nothing after the pass at P");
         cover!(src, s == 0, "the last pass a full pass (D = 0)");
         cover!(src, s >= 1 && s < 4, "the last pass an early target at P (a later one dropped)");
         return Ok(());
     }
     src.assume(!r.last)?;
-    let ev = cy.next_event(&mut pos);
-    let nx = cy.pass();
-    check!(src, ev == Some(header(nx)), "the next pass begins with its header");
+    let nx = match &mut cy {
+        Some(cy) => {
+            let ev = cy.next_event(&mut pos);
+            check!(src, ev == Some(header(cy.pass())), "the next pass begins with its header");
+            Some(cy.pass())
+        }
+        None => next(&sp, &r),
+    };
+    check!(src, nx.is_some(), "a pass not at P has a successor");
+    let Some(nx) = nx else { return Ok(()) };
     check!(src, nx.n == r.n + 1 && i64::from(nx.n) <= count, "pass numbers count up by one, within K");
     check!(src, nx.depth > r.depth && nx.depth <= p, "depths strictly increase and never pass P");
     check!(src, nx.last == (nx.depth == p), "last exactly at depth P");
@@ -178,10 +218,10 @@ cycle_harness::property! {
         rules: ["G162.PQ", "G162.SPLIT", "PRJ.MAXPASS"],
         states: "The G162 cycle's start (the induction base of g162_split_step; stubs as there): refused with TOO MANY PASSES on Q exactly when K > max_passes, pass_count = K, the first pass the register's pass 1 (Q, or t(1) when Q > P), its header first.",
         body: |src, scope| body(src, &scope),
-        /// The Kani harness of the start (`-Z stubbing`: `norm`, `target`, `full_depth`).
-        kani: test(START) { unwind: 6, stubs: [cycle_impl::g162::split::norm => crate::g162_split::stubs::norm_spec, cycle_impl::g162::split::target => crate::g162_split_target::target_spec, cycle_impl::g162::split::full_depth => crate::g162_split::stubs::full_depth_spec], why: "not run yet" },
+        /// The Kani proof of the start (`-Z stubbing`: `norm`, `target`, `full_depth`).
+        kani: proof(START) { unwind: 6, stubs: [cycle_impl::g162::split::norm => crate::g162_split::stubs::norm_spec, cycle_impl::g162::split::target => crate::g162_split_target::target_spec, cycle_impl::g162::split::full_depth => crate::g162_split::stubs::full_depth_spec], measured: "SUCCESSFUL (1843 checks, 90 unreachable: the other states'; 3/9 covers, 6 unreachable: the other states'), 20.0 s, 0.92 GB" },
         tests {
-            fn g162_split_start_random = random(0x5eed_1621, 4) on START, random(0x5eed_1622, 4) on Scope { max_len: 40, case: 0 };
+            fn g162_split_start_random = random(0x5eed_1621, 4) on START, random(0x5eed_1622, 4) on Scope { max_len: 40, case: 0, cycle: true };
         }
     }
 }
@@ -191,13 +231,13 @@ cycle_harness::property! {
         rules: ["G162.PQ", "G162.SPLIT", "PRJ.MAXPASS"],
         states: "The G162 cycle by induction over its passes (norm, target and m·Q stubbed: draw_pkd, g162_split_target, smt/ lemma 17): from any register pass not at P the next is the register's pass n + 1 (full pass at (n + 1)·Q, or the first kept target), strictly deeper, not past P, last exactly at P, numbered within K; the start and the pass at P (g162_split_start, g162_split_last).",
         body: |src, scope| body(src, &scope),
-        /// The Kani harness of a pass not at P (START and LAST: above and below). Unwind 6: the
+        /// The Kani proof of a pass not at P (START and LAST: above and below). Unwind 6: the
         /// body's four targets, `pass_count`'s and `split_after`'s ≤ 4, `next_event`'s two turns.
-        kani: test(STEP) { unwind: 6, stubs: [cycle_impl::g162::split::norm => crate::g162_split::stubs::norm_spec, cycle_impl::g162::split::target => crate::g162_split_target::target_spec, cycle_impl::g162::split::full_depth => crate::g162_split::stubs::full_depth_spec], why: "not run yet" },
+        kani: proof(STEP) { unwind: 6, stubs: [cycle_impl::g162::split::norm => crate::g162_split::stubs::norm_spec, cycle_impl::g162::split::target => crate::g162_split_target::target_spec, cycle_impl::g162::split::full_depth => crate::g162_split::stubs::full_depth_spec], measured: "SUCCESSFUL (1844 checks, 76 unreachable: the other states'; 4/9 covers, 5 unreachable: the other states'), 80.4 s, 0.26 GB" },
         tests {
             /// P, Q ≤ 30 (k ≤ 30 / Q), every state; each draw's 6 smallest and largest values.
-            fn g162_split_step_exhaustive = exhaustive(6, 3_000_000) on Scope { max_len: 30, case: 3 };
-            fn g162_split_step_random = random(0x5eed_1623, 4) on FULL, random(0x5eed_1624, 4) on Scope { max_len: 200, case: 3 };
+            fn g162_split_step_exhaustive = exhaustive(6, 3_000_000) on Scope { max_len: 30, case: 3, cycle: true }, exhaustive(6, 3_000_000) on Scope { max_len: 30, case: 3, cycle: false };
+            fn g162_split_step_random = random(0x5eed_1623, 4) on FULL, random(0x5eed_1624, 4) on Scope { max_len: 200, case: 3, cycle: true }, random(0x5eed_1627, 4) on Scope { cycle: false, ..FULL };
         }
     }
 }
@@ -207,10 +247,10 @@ cycle_harness::property! {
         rules: ["G162.PQ", "G162.SPLIT", "PRJ.MAXPASS"],
         states: "The G162 cycle's pass at P (the end of g162_split_step's induction; stubs as there): it is pass K, and the cycle ends.",
         body: |src, scope| body(src, &scope),
-        /// The Kani harness of the pass at P (unwind as `g162_split_step`).
-        kani: test(LAST) { unwind: 6, stubs: [cycle_impl::g162::split::norm => crate::g162_split::stubs::norm_spec, cycle_impl::g162::split::target => crate::g162_split_target::target_spec, cycle_impl::g162::split::full_depth => crate::g162_split::stubs::full_depth_spec], why: "not run yet" },
+        /// The Kani proof of the pass at P (unwind as `g162_split_step`).
+        kani: proof(LAST) { unwind: 6, stubs: [cycle_impl::g162::split::norm => crate::g162_split::stubs::norm_spec, cycle_impl::g162::split::target => crate::g162_split_target::target_spec, cycle_impl::g162::split::full_depth => crate::g162_split::stubs::full_depth_spec], measured: "SUCCESSFUL (1844 checks, 84 unreachable: the other states'; 3/9 covers, 6 unreachable: the other states'), 23.1 s, 0.25 GB" },
         tests {
-            fn g162_split_last_random = random(0x5eed_1625, 4) on LAST, random(0x5eed_1626, 4) on Scope { max_len: 40, case: 2 };
+            fn g162_split_last_random = random(0x5eed_1625, 4) on LAST, random(0x5eed_1626, 4) on Scope { max_len: 40, case: 2, cycle: true };
         }
     }
 }

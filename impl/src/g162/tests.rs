@@ -92,7 +92,7 @@ mod readings;
 
 /// `Cycle::at_pass(r)` (the proof harnesses' state constructor) is the state the running cycle
 /// reaches after pass r's five moves: from there it emits exactly the rest of the real run, for
-/// every pass of every P, Q ≤ 12.
+/// every pass of every P, Q ≤ 12; and the run's passes are `first`/`next`'s.
 #[test]
 fn at_pass_is_the_state_after_a_pass() {
     use cycle_vocab::Config;
@@ -129,6 +129,9 @@ fn at_pass_is_the_state_after_a_pass() {
             }
             assert_eq!(Some(passes), pass_count(&SplitParams { depth: p, allowance: q }, u32::MAX));
             assert_eq!(checked + 1, passes, "P{p} Q{q}: every pass after the first checked");
+            // The cycle's passes (its own fast path for full passes included) are the split's.
+            let run_depths: Vec<i64> = all.iter().filter_map(|e| if let Event::Pass(h) = e { Some(h.diameter_depth / 2) } else { None }).collect();
+            assert_eq!(run_depths, depths(p, q), "P{p} Q{q}: the cycle's passes are first/next's");
         }
     }
 }
