@@ -8,7 +8,7 @@
 //! from panicking.
 
 use crate::batch::{self, Batch, Unit};
-use crate::emit::emit;
+use crate::emit::{emit, moves};
 use cycle_vocab::{Alarm, AlarmCode, Event, Move, Pass, PassKind, Rule};
 
 /// Which cutting cycle.
@@ -214,7 +214,7 @@ impl Batch<CUT_EVENTS> for Cycle {
             unit.put(Event::Pass(h));
         }
         for step in 0..STEPS {
-            unit.put_some(self.move_at(step).and_then(|m| emit(m, pos)));
+            unit.put_move(self.move_at(step), pos);
         }
         self.step = STEPS;
         unit.written()
@@ -228,11 +228,31 @@ impl Cycle {
         batch::fill(self, pos, out)
     }
 
-    /// Writes a new cycle's events, all of them, into `slots` (as [`Cycle::fill`] would);
-    /// how many. The cycle is then done.
+    /// Writes a new cycle's events, all of them, into `slots` (as [`Cycle::fill`] would: the
+    /// header, then each move that moves, PRJ.NOOP); how many. The cycle is taken by value and
+    /// each event built in its slot from the cycle's values, so that nothing of it is kept in
+    /// memory on the way (a cycle that does not fit is run from [`crate::run::Run`] instead).
     #[inline(always)]
-    pub(crate) fn write_all(&mut self, pos: &mut (i64, i64), slots: &mut [Event; CUT_EVENTS]) -> usize {
-        self.write_unit(pos, slots)
+    pub(crate) fn write_new(self, pos: &mut (i64, i64), slots: &mut [Event; CUT_EVENTS]) -> usize {
+        let [head, slots @ ..] = slots;
+        *head = Event::Pass(Pass { index: self.index, kind: PassKind::Rough, diameter_depth: self.depth, rule: self.rule_path });
+        let mut at = *pos;
+        let mut n = 0;
+        let mut put = |m: Move| {
+            if moves((m.x, m.z), &mut at) {
+                if let Some(slot) = slots.get_mut(n) {
+                    *slot = Event::Move(m);
+                }
+                n += 1;
+            }
+        };
+        let p = self.rule_path;
+        put(Move::rapid(self.cut_start.0, self.cut_start.1, self.rule_start));
+        put(Move::feed(self.end.0, self.end.1, self.feed, p));
+        put(Move::feed(self.back.0, self.back.1, self.feed, p));
+        put(Move::rapid(self.a.0, self.a.1, p));
+        *pos = at;
+        1 + n
     }
 }
 

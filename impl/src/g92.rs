@@ -62,14 +62,23 @@ struct PullInputs {
 impl PullMemo {
     /// G92.JK.1–7 amounts (No.19 of the lead where J or K is omitted, No.5131 for JK.1's J)
     /// and the G92.PULLOUT offsets for these inputs: the kept ones when the inputs are the last cycle's.
+    /// Inlined: the kept values are read where they are used; a change of inputs is
+    /// [`PullMemo::make`].
+    #[inline(always)]
     fn get(&mut self, config: &Config, params: &Params, inputs: PullInputs) -> (Option<Amounts>, Option<Offsets>) {
         if self.made_from != Some(inputs) {
-            let c = tenths_of_lead(params.no19_pullout, inputs.lead, config.grid);
-            let amounts = g92_amounts(inputs.j, inputs.k, c, params.p5131_chamfer_angle);
-            let offsets = amounts.map(|am| offsets(am, inputs.w, inputs.r, inputs.s));
-            *self = PullMemo { made_from: Some(inputs), amounts, offsets };
+            self.make(config, params, inputs);
         }
         (self.amounts, self.offsets)
+    }
+
+    /// The amounts and offsets for new inputs, kept.
+    #[inline(never)]
+    fn make(&mut self, config: &Config, params: &Params, inputs: PullInputs) {
+        let c = tenths_of_lead(params.no19_pullout, inputs.lead, config.grid);
+        let amounts = g92_amounts(inputs.j, inputs.k, c, params.p5131_chamfer_angle);
+        let offsets = amounts.map(|am| offsets(am, inputs.w, inputs.r, inputs.s));
+        *self = PullMemo { made_from: Some(inputs), amounts, offsets };
     }
 }
 

@@ -4,7 +4,7 @@
 
 use crate::config;
 use crate::contour::Contour;
-use crate::emit::emit;
+use crate::emit::{emit, START_EVENTS};
 use crate::g90::CUT_EVENTS;
 use crate::lex::{Block, Blocks};
 use crate::modal::{Machine, Program};
@@ -152,11 +152,12 @@ impl Core<'_> {
     /// Reads blocks with nothing running, while `out` has room: a plain block of a
     /// G00/G01/G32/G33/G34 mode (`modal::Plain`) writes its move straight into the next slot
     /// (none for a move to where the machine stands, PRJ.NOOP); a plain G90/G94 block's cycle
-    /// (`Machine::plain_cut`) writes its events straight after it, whole where they fit, and
-    /// runs on (in `run`) where not; a plain G92 block (`Machine::plain_cycle`) writes its
-    /// cycle's events after it; the next block is read once the cycle is done. Any other block is read by the interpreter and ends the call
-    /// (what it runs, if anything, is left in `run`). Returns as [`Core::fill_slow`]. Bounded
-    /// work: a block per iteration, at most `out.len()` events.
+    /// (`Machine::plain_cut`) and a plain G92 block's pass of one start (`Machine::plain_g92`)
+    /// are written whole straight after it, each event built from the values the cycle was
+    /// built from. A cycle that does not fit (or a G92 of several starts) is left in `run` and
+    /// ends the call ([`Core::fill`] runs it next), and so does any other block, read by the
+    /// interpreter. Returns as [`Core::fill_slow`]. Bounded work: a block per iteration, at
+    /// most `out.len()` events.
     fn fill_blocks(&mut self, out: &mut [Event]) -> (usize, Result<bool, Alarm>) {
         let mut n = 0;
         while let Some(rest) = out.get_mut(n..).filter(|r| !r.is_empty()) {
@@ -173,40 +174,33 @@ impl Core<'_> {
             };
             if let Some(code) = plain.cut() {
                 // A G90/G94 pass: its cycle, written whole where it fits, else run.
-                let mut cycle = match self.machine.plain_cut(code, &self.block) {
+                let cycle = match self.machine.plain_cut(code, &self.block) {
                     Ok(Some(c)) => c,
                     Ok(None) => continue,
                     Err(a) => return (n, self.fail_with(a)),
                 };
-                let pos = &mut self.machine.pos;
                 if let Some(slots) = rest.first_chunk_mut::<CUT_EVENTS>() {
-                    n += cycle.write_all(pos, slots);
+                    n += cycle.write_new(&mut self.machine.pos, slots);
                     continue;
                 }
-                let (written, done) = cycle.fill(pos, rest);
-                n += written;
-                if !done {
-                    self.run = Run::Cut(cycle);
-                    return (n, Ok(true));
-                }
-                continue;
+                // Less room than the cycle: it runs from `run` ([`Core::fill`] writes it next).
+                self.run = Run::Cut(cycle);
+                return (n, Ok(true));
             }
-            if !plain.is_move() {
-                // A G92 pass: its cycle writes its events now.
-                if let Err(a) = self.machine.plain_cycle(plain, &self.block, &mut self.run) {
-                    return (n, self.fail_with(a));
-                }
-                let pos = &mut self.machine.pos;
-                let (written, done) = match &mut self.run {
-                    Run::Multipass(c) => c.fill(pos, rest),
-                    other => other.fill(pos, rest, &self.contour),
+            if plain.is_g92() {
+                // A G92 pass: of one start, written whole where it fits, else run.
+                let cycle = match self.machine.plain_g92(&self.block) {
+                    Ok(Some(c)) => c,
+                    Ok(None) => continue,
+                    Err(a) => return (n, self.fail_with(a)),
                 };
-                n += written;
-                if !done {
-                    return (n, Ok(true));
+                if let (true, Some(slots)) = (cycle.is_single(), rest.first_chunk_mut::<START_EVENTS>()) {
+                    n += cycle.write_new(&mut self.machine.pos, slots);
+                    continue;
                 }
-                self.run = Run::Idle;
-                continue;
+                // Several starts, or less room than the pass: it runs from `run`.
+                self.run = Run::Multipass(cycle);
+                return (n, Ok(true));
             }
             match self.machine.plain_move(plain, &self.block) {
                 Ok(Some(m)) => {
