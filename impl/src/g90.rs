@@ -89,6 +89,11 @@ fn add(a: i64, b: i64) -> i64 {
     a.saturating_add(b)
 }
 
+/// `|a − b|`, saturating (the same as `sub(a, b).saturating_abs()`, in fewer steps).
+fn abs_diff(a: i64, b: i64) -> i64 {
+    i64::try_from(a.abs_diff(b)).unwrap_or(i64::MAX)
+}
+
 /// G90.TAPER / G94.TAPER: a taper `t` and travel `travel` of different signs need
 /// |t| ≤ |travel| (both on the same scale).
 fn taper_fits(t: i64, travel: i64) -> bool {
@@ -104,33 +109,34 @@ pub fn cycle(code: CutCode, st: &CutState, a: (i64, i64), feed: i64, line: u32) 
     let (rule_format, rule_path, rule_taper) = code.rules();
     let geometry = |word: u8, rule: Rule| Alarm::new(AlarmCode::Geometry, Some(word), rule, line);
     let d = st.end;
-    let u = sub(d.0, a.0); // diameter
-    let w = sub(d.1, a.1);
     let t = st.taper;
     let (cut_start, back, diameter_depth) = match code {
         CutCode::G90 => {
-            if w == 0 {
+            // W = D.z − A.z = 0.
+            if d.1 == a.1 {
                 return Err(geometry(b'Z', rule_format));
             }
-            // I is a radius: 2|I| ≤ |U| on diameter.
-            if !taper_fits(t.saturating_mul(2), u) {
+            // I is a radius: 2|I| ≤ |U| on diameter (U = D.x − A.x, diameter).
+            if t != 0 && !taper_fits(t.saturating_mul(2), sub(d.0, a.0)) {
                 return Err(geometry(b'I', rule_taper));
             }
             // C.x = D.x + 2I: ① rapid X to C.x; ③ feed X back to A.x at D.z.
             let cx = add(d.0, t.saturating_mul(2));
-            ((cx, a.1), (a.0, d.1), sub(a.0, cx).saturating_abs())
+            ((cx, a.1), (a.0, d.1), abs_diff(a.0, cx))
         }
         CutCode::G94 => {
-            if u == 0 {
+            // U = D.x − A.x = 0.
+            if d.0 == a.0 {
                 return Err(geometry(b'X', rule_format));
             }
-            if !taper_fits(t, w) {
+            // W = D.z − A.z.
+            if t != 0 && !taper_fits(t, sub(d.1, a.1)) {
                 return Err(geometry(b'K', rule_taper));
             }
             // C.z = D.z + k (k = C.z − D.z, G94.TAPER): ① rapid Z to C.z; ③ feed Z back to A.z
             // at D.x. The Z depth is printed as a radius: diameter_depth = 2·|A.z − C.z|.
             let cz = add(d.1, t);
-            ((a.0, cz), (d.0, a.1), sub(a.1, cz).saturating_abs().saturating_mul(2))
+            ((a.0, cz), (d.0, a.1), abs_diff(a.1, cz).saturating_mul(2))
         }
     };
     Ok(Cycle {
