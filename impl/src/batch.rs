@@ -4,7 +4,8 @@
 //! unit begun by `next_event` or where less room than a unit is left. The events are those of
 //! `next_event`, in the same order.
 
-use cycle_vocab::Event;
+use crate::emit::moves;
+use cycle_vocab::{Event, Move};
 
 /// The events of one unit, each written in place into the next of the caller's slots; an event
 /// past the last slot is not written (the units' sizes are their most events).
@@ -28,11 +29,19 @@ impl<'a> Unit<'a> {
         }
     }
 
-    /// Writes `e` if there is one (a move that does not move is none: PRJ.NOOP).
+    /// Writes the move `m`, if there is one, as [`emit`] makes it an event: none for a move to
+    /// where the machine stands (PRJ.NOOP), else it moves the machine (`pos`). The event is
+    /// built in its slot (an event made before the slot is known is built on the stack, then
+    /// copied).
     #[inline(always)]
-    pub(crate) fn put_some(&mut self, e: Option<Event>) {
-        if let Some(e) = e {
-            self.put(e);
+    pub(crate) fn put_move(&mut self, m: Option<Move>, pos: &mut (i64, i64)) {
+        if let Some(m) = m {
+            if moves((m.x, m.z), pos) {
+                if let Some(slot) = self.slots.get_mut(self.n) {
+                    *slot = Event::Move(m);
+                    self.n += 1;
+                }
+            }
         }
     }
 

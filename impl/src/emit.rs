@@ -95,7 +95,7 @@ impl Cycle {
     }
 
     /// The move of `step` for the current start, or `None` when the step has no move.
-    #[inline]
+    #[inline(always)]
     fn move_at(&self, step: u8) -> Option<Move> {
         let p = &self.path;
         let thread = |(x, z): (i64, i64), rule: Rule| Some(Move::thread(x, z, p.lead, self.angle, rule));
@@ -237,6 +237,23 @@ impl Cycle {
         (n, false)
     }
 
+    /// A cycle of one pass and one start (a G92 of L1): [`Cycle::write_new`] writes it whole.
+    #[inline(always)]
+    pub(crate) fn is_single(&self) -> bool {
+        matches!(self.plan, Plan::Single(_)) && self.path.starts == 1
+    }
+
+    /// Writes a new cycle of one pass and one start ([`Cycle::is_single`]), all its events, into
+    /// `slots` (as [`Cycle::fill`] would); how many. Taken by value, so that a cycle built just
+    /// before is written from the values it was built from, never kept in memory.
+    #[inline(always)]
+    pub(crate) fn write_new(mut self, pos: &mut (i64, i64), slots: &mut [Event; START_EVENTS]) -> usize {
+        let mut at = *pos;
+        let n = self.write_start(&mut at, slots);
+        *pos = at;
+        n
+    }
+
     /// Writes the pending pass header and the moves of the current start into `slots`; returns
     /// how many were written. The steps are unrolled, so each event is built in place.
     #[inline(always)]
@@ -246,7 +263,7 @@ impl Cycle {
             unit.put(h);
         }
         for step in 0..STEPS {
-            unit.put_some(self.move_at(step).and_then(|m| emit(m, pos)));
+            unit.put_move(self.move_at(step), pos);
         }
         self.step = STEPS;
         unit.written()
@@ -277,9 +294,17 @@ pub const START_EVENTS: usize = 1 + STEPS as usize;
 /// which is not emitted (PRJ.NOOP).
 #[inline(always)]
 pub fn emit(m: Move, pos: &mut (i64, i64)) -> Option<Event> {
-    if (m.x, m.z) == *pos {
-        return None;
+    moves((m.x, m.z), pos).then_some(Event::Move(m))
+}
+
+/// Whether a move to `to` moves the machine from `pos` (PRJ.NOOP: a move to the current
+/// position is not emitted); if it does, `pos` is `to`. (The end point by value, not the move
+/// by reference: a move whose address is taken is built on the stack, then copied.)
+#[inline(always)]
+pub fn moves(to: (i64, i64), pos: &mut (i64, i64)) -> bool {
+    if to == *pos {
+        return false;
     }
-    *pos = (m.x, m.z);
-    Some(Event::Move(m))
+    *pos = to;
+    true
 }

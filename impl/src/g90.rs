@@ -8,7 +8,7 @@
 //! from panicking.
 
 use crate::batch::{self, Batch, Unit};
-use crate::emit::emit;
+use crate::emit::{emit, moves};
 use cycle_vocab::{Alarm, AlarmCode, Event, Move, Pass, PassKind, Rule};
 
 /// Which cutting cycle.
@@ -89,6 +89,11 @@ fn add(a: i64, b: i64) -> i64 {
     a.saturating_add(b)
 }
 
+/// `|a − b|`, saturating (the same as `sub(a, b).saturating_abs()`, in fewer steps).
+fn abs_diff(a: i64, b: i64) -> i64 {
+    i64::try_from(a.abs_diff(b)).unwrap_or(i64::MAX)
+}
+
 /// G90.TAPER / G94.TAPER: a taper `t` and travel `travel` of different signs need
 /// |t| ≤ |travel| (both on the same scale).
 fn taper_fits(t: i64, travel: i64) -> bool {
@@ -104,33 +109,34 @@ pub fn cycle(code: CutCode, st: &CutState, a: (i64, i64), feed: i64, line: u32) 
     let (rule_format, rule_path, rule_taper) = code.rules();
     let geometry = |word: u8, rule: Rule| Alarm::new(AlarmCode::Geometry, Some(word), rule, line);
     let d = st.end;
-    let u = sub(d.0, a.0); // diameter
-    let w = sub(d.1, a.1);
     let t = st.taper;
     let (cut_start, back, diameter_depth) = match code {
         CutCode::G90 => {
-            if w == 0 {
+            // W = D.z − A.z = 0.
+            if d.1 == a.1 {
                 return Err(geometry(b'Z', rule_format));
             }
-            // I is a radius: 2|I| ≤ |U| on diameter.
-            if !taper_fits(t.saturating_mul(2), u) {
+            // I is a radius: 2|I| ≤ |U| on diameter (U = D.x − A.x, diameter).
+            if t != 0 && !taper_fits(t.saturating_mul(2), sub(d.0, a.0)) {
                 return Err(geometry(b'I', rule_taper));
             }
             // C.x = D.x + 2I: ① rapid X to C.x; ③ feed X back to A.x at D.z.
             let cx = add(d.0, t.saturating_mul(2));
-            ((cx, a.1), (a.0, d.1), sub(a.0, cx).saturating_abs())
+            ((cx, a.1), (a.0, d.1), abs_diff(a.0, cx))
         }
         CutCode::G94 => {
-            if u == 0 {
+            // U = D.x − A.x = 0.
+            if d.0 == a.0 {
                 return Err(geometry(b'X', rule_format));
             }
-            if !taper_fits(t, w) {
+            // W = D.z − A.z.
+            if t != 0 && !taper_fits(t, sub(d.1, a.1)) {
                 return Err(geometry(b'K', rule_taper));
             }
             // C.z = D.z + k (k = C.z − D.z, G94.TAPER): ① rapid Z to C.z; ③ feed Z back to A.z
             // at D.x. The Z depth is printed as a radius: diameter_depth = 2·|A.z − C.z|.
             let cz = add(d.1, t);
-            ((a.0, cz), (d.0, a.1), sub(a.1, cz).saturating_abs().saturating_mul(2))
+            ((a.0, cz), (d.0, a.1), abs_diff(a.1, cz).saturating_mul(2))
         }
     };
     Ok(Cycle {
@@ -214,7 +220,7 @@ impl Batch<CUT_EVENTS> for Cycle {
             unit.put(Event::Pass(h));
         }
         for step in 0..STEPS {
-            unit.put_some(self.move_at(step).and_then(|m| emit(m, pos)));
+            unit.put_move(self.move_at(step), pos);
         }
         self.step = STEPS;
         unit.written()
@@ -228,11 +234,31 @@ impl Cycle {
         batch::fill(self, pos, out)
     }
 
-    /// Writes a new cycle's events, all of them, into `slots` (as [`Cycle::fill`] would);
-    /// how many. The cycle is then done.
+    /// Writes a new cycle's events, all of them, into `slots` (as [`Cycle::fill`] would: the
+    /// header, then each move that moves, PRJ.NOOP); how many. The cycle is taken by value and
+    /// each event built in its slot from the cycle's values, so that nothing of it is kept in
+    /// memory on the way (a cycle that does not fit is run from [`crate::run::Run`] instead).
     #[inline(always)]
-    pub(crate) fn write_all(&mut self, pos: &mut (i64, i64), slots: &mut [Event; CUT_EVENTS]) -> usize {
-        self.write_unit(pos, slots)
+    pub(crate) fn write_new(self, pos: &mut (i64, i64), slots: &mut [Event; CUT_EVENTS]) -> usize {
+        let [head, slots @ ..] = slots;
+        *head = Event::Pass(Pass { index: self.index, kind: PassKind::Rough, diameter_depth: self.depth, rule: self.rule_path });
+        let mut at = *pos;
+        let mut n = 0;
+        let mut put = |m: Move| {
+            if moves((m.x, m.z), &mut at) {
+                if let Some(slot) = slots.get_mut(n) {
+                    *slot = Event::Move(m);
+                }
+                n += 1;
+            }
+        };
+        let p = self.rule_path;
+        put(Move::rapid(self.cut_start.0, self.cut_start.1, self.rule_start));
+        put(Move::feed(self.end.0, self.end.1, self.feed, p));
+        put(Move::feed(self.back.0, self.back.1, self.feed, p));
+        put(Move::rapid(self.a.0, self.a.1, p));
+        *pos = at;
+        1 + n
     }
 }
 

@@ -62,14 +62,23 @@ struct PullInputs {
 impl PullMemo {
     /// G92.JK.1–7 amounts (No.19 of the lead where J or K is omitted, No.5131 for JK.1's J)
     /// and the G92.PULLOUT offsets for these inputs: the kept ones when the inputs are the last cycle's.
+    /// Inlined: the kept values are read where they are used; a change of inputs is
+    /// [`PullMemo::make`].
+    #[inline(always)]
     fn get(&mut self, config: &Config, params: &Params, inputs: PullInputs) -> (Option<Amounts>, Option<Offsets>) {
         if self.made_from != Some(inputs) {
-            let c = tenths_of_lead(params.no19_pullout, inputs.lead, config.grid);
-            let amounts = g92_amounts(inputs.j, inputs.k, c, params.p5131_chamfer_angle);
-            let offsets = amounts.map(|am| offsets(am, inputs.w, inputs.r, inputs.s));
-            *self = PullMemo { made_from: Some(inputs), amounts, offsets };
+            self.make(config, params, inputs);
         }
         (self.amounts, self.offsets)
+    }
+
+    /// The amounts and offsets for new inputs, kept.
+    #[inline(never)]
+    fn make(&mut self, config: &Config, params: &Params, inputs: PullInputs) {
+        let c = tenths_of_lead(params.no19_pullout, inputs.lead, config.grid);
+        let amounts = g92_amounts(inputs.j, inputs.k, c, params.p5131_chamfer_angle);
+        let offsets = amounts.map(|am| offsets(am, inputs.w, inputs.r, inputs.s));
+        *self = PullMemo { made_from: Some(inputs), amounts, offsets };
     }
 }
 
@@ -91,8 +100,8 @@ pub fn cycle(
     let alarm = |code: AlarmCode, word: Option<u8>, rule: Rule| Alarm::new(code, word, rule, line);
     let d = st.end;
     let r = st.r;
-    // G92.FORMAT: W = 0 is a face thread.
-    let w = sat(i128::from(d.1) - i128::from(a.1));
+    // G92.FORMAT: W = 0 is a face thread. (Saturating, as the exact difference taken to i64.)
+    let w = d.1.saturating_sub(a.1);
     if w == 0 {
         return Err(alarm(AlarmCode::Geometry, Some(b'Z'), Rule::G92Format));
     }
@@ -126,7 +135,8 @@ pub fn cycle(
     // G92.PATH — step ③ opposite to ① (DEPARTS, `002_…` line 55), the last check: ③ starts at
     // X₃ (the pull-out's end, else D.x); X₃ beyond A.x (s·(A.x − X₃) < 0) is refused, on J
     // when the pull-out's short-axis move carries X there, else on X.
-    let beyond = |x: i128| i128::from(s) * (i128::from(a.0) - x) < 0;
+    // s·(A.x − x) < 0 with s = ±1, as a comparison (no product).
+    let beyond = |x: i128| if s > 0 { i128::from(a.0) < x } else { i128::from(a.0) > x };
     let x3 = i128::from(d.0) + pull.map_or(0, |o| i128::from(o.end.0));
     if beyond(x3) {
         let word = if beyond(i128::from(d.0)) { b'X' } else { b'J' };
@@ -143,7 +153,7 @@ pub fn cycle(
         rule_pull: Rule::G92Pullout,
     };
     // Pass header: the X infeed from the start point, |A.x − C.x| on diameter.
-    let depth = sat((i128::from(a.0) - i128::from(cx)).abs());
+    let depth = i64::try_from(a.0.abs_diff(cx)).unwrap_or(i64::MAX);
     let header = Pass { index: st.index, kind: PassKind::Rough, diameter_depth: depth, rule: Rule::G92Path };
     Ok(Cycle::new(path, Plan::Single(header), Cut { p0: (cx, a.1), end: d }))
 }

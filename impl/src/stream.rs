@@ -4,13 +4,13 @@
 
 use crate::config;
 use crate::contour::Contour;
-use crate::emit::emit;
-use crate::g90::CUT_EVENTS;
 use crate::lex::{Block, Blocks};
 use crate::modal::{Machine, Program};
 use crate::run::Run;
 use crate::sub;
 use cycle_vocab::{Alarm, Config, Event};
+
+mod runs;
 
 /// The uninterrupted expansion (the trace U of OP.SCRIPT): blocks in, events out.
 pub(crate) struct Core<'a> {
@@ -149,77 +149,50 @@ impl Core<'_> {
         }
     }
 
-    /// Reads blocks with nothing running, while `out` has room: a plain block of a
-    /// G00/G01/G32/G33/G34 mode (`modal::Plain`) writes its move straight into the next slot
-    /// (none for a move to where the machine stands, PRJ.NOOP); a plain G90/G94 block's cycle
-    /// (`Machine::plain_cut`) writes its events straight after it, whole where they fit, and
-    /// runs on (in `run`) where not; a plain G92 block (`Machine::plain_cycle`) writes its
-    /// cycle's events after it; the next block is read once the cycle is done. Any other block is read by the interpreter and ends the call
-    /// (what it runs, if anything, is left in `run`). Returns as [`Core::fill_slow`]. Bounded
-    /// work: a block per iteration, at most `out.len()` events.
+    /// Reads blocks with nothing running, while `out` has room. A plain block (`modal::Plain`)
+    /// and the plain blocks of its kind after it are read by that kind's own loop
+    /// (`stream::runs`), which writes what they run straight into `out`; any other block is
+    /// read by the interpreter and ends the call (what it runs, if anything, is left in `run`).
+    /// Returns as [`Core::fill_slow`]. Bounded work: a block per iteration, at most `out.len()`
+    /// events.
     fn fill_blocks(&mut self, out: &mut [Event]) -> (usize, Result<bool, Alarm>) {
         let mut n = 0;
-        while let Some(rest) = out.get_mut(n..).filter(|r| !r.is_empty()) {
-            match self.lex() {
-                Ok(true) => {}
-                Ok(false) => return (n, Ok(false)),
-                Err(a) => return (n, self.fail_with(a)),
-            }
+        if let Err(r) = self.advance(!out.is_empty()) {
+            return (n, r);
+        }
+        loop {
             let Some(plain) = self.machine.plain(&self.block) else {
                 return match self.interpret() {
                     Ok(()) => (n, Ok(true)),
                     Err(a) => (n, self.fail_with(a)),
                 };
             };
-            if let Some(code) = plain.cut() {
-                // A G90/G94 pass: its cycle, written whole where it fits, else run.
-                let mut cycle = match self.machine.plain_cut(code, &self.block) {
-                    Ok(Some(c)) => c,
-                    Ok(None) => continue,
-                    Err(a) => return (n, self.fail_with(a)),
-                };
-                let pos = &mut self.machine.pos;
-                if let Some(slots) = rest.first_chunk_mut::<CUT_EVENTS>() {
-                    n += cycle.write_all(pos, slots);
-                    continue;
-                }
-                let (written, done) = cycle.fill(pos, rest);
-                n += written;
-                if !done {
-                    self.run = Run::Cut(cycle);
-                    return (n, Ok(true));
-                }
-                continue;
-            }
-            if !plain.is_move() {
-                // A G92 pass: its cycle writes its events now.
-                if let Err(a) = self.machine.plain_cycle(plain, &self.block, &mut self.run) {
-                    return (n, self.fail_with(a));
-                }
-                let pos = &mut self.machine.pos;
-                let (written, done) = match &mut self.run {
-                    Run::Multipass(c) => c.fill(pos, rest),
-                    other => other.fill(pos, rest, &self.contour),
-                };
-                n += written;
-                if !done {
-                    return (n, Ok(true));
-                }
-                self.run = Run::Idle;
-                continue;
-            }
-            match self.machine.plain_move(plain, &self.block) {
-                Ok(Some(m)) => {
-                    if let (Some(e), Some(slot)) = (emit(m, &mut self.machine.pos), rest.first_mut()) {
-                        *slot = e;
-                        n += 1;
-                    }
-                }
-                Ok(None) => {}
-                Err(a) => return (n, self.fail_with(a)),
+            let (written, end) = if let Some(code) = plain.cut() {
+                self.cut_run(code, out, n)
+            } else if plain.is_g92() {
+                self.g92_run(out, n)
+            } else {
+                self.move_run(plain, out, n)
+            };
+            n = written;
+            if let Some(r) = end {
+                return (n, r);
             }
         }
-        (n, Ok(true))
+    }
+
+    /// After a block: the next block read, if `room` is left. `Err`: what the call returns (the
+    /// buffer full, the program over, or the lexer's alarm).
+    #[inline(always)]
+    fn advance(&mut self, room: bool) -> Result<(), Result<bool, Alarm>> {
+        if !room {
+            return Err(Ok(true));
+        }
+        match self.lex() {
+            Ok(true) => Ok(()),
+            Ok(false) => Err(Ok(false)),
+            Err(a) => Err(self.fail_with(a)),
+        }
     }
 
     /// Ends the stream with `alarm` ([`Core::fail`]) and returns it.

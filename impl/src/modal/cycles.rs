@@ -4,6 +4,7 @@
 
 use super::{Machine, Mode, Vals};
 use crate::arc::{self, Centre};
+use crate::emit;
 use crate::g162::{self, SplitParams};
 use crate::g90::{self, CutCode};
 use crate::g92;
@@ -14,9 +15,23 @@ use cycle_vocab::readings::G94K;
 use cycle_vocab::{Alarm, AlarmCode, Move, Rule};
 
 impl Machine {
-    /// G92.MODAL, G92.FORMAT: a block in G92 mode or with G92.
+    /// G92.MODAL, G92.FORMAT: a block in G92 mode or with G92; its cycle, if any, written
+    /// into `run`.
     #[inline(always)]
     pub(super) fn g92(&mut self, coded: bool, v: &Vals, axis: bool, line: u32, run: &mut Run) -> Result<(), Alarm> {
+        // A `match`, not `?`: `?` copies the cycle (~300 bytes) once more on its way out.
+        match self.g92_cycle(coded, v, axis, line) {
+            Ok(Some(c)) => *run = Run::Multipass(c),
+            Ok(None) => {}
+            Err(a) => return Err(a),
+        }
+        Ok(())
+    }
+
+    /// [`Machine::g92`]'s cycle, returned (none without axis words); inlined, so that the
+    /// caller builds it where it keeps it.
+    #[inline(always)]
+    pub(super) fn g92_cycle(&mut self, coded: bool, v: &Vals, axis: bool, line: u32) -> Result<Option<emit::Cycle>, Alarm> {
         if coded && self.mode != Mode::G92 {
             self.g92.new_run(self.pos);
         }
@@ -38,7 +53,7 @@ impl Machine {
             st.starts = u32::try_from(l).unwrap_or(1);
         }
         if !axis {
-            return Ok(());
+            return Ok(None);
         }
         // G92.MODAL: an omitted end coordinate is the run's.
         st.end = Self::end_point(v, self.pos, st.end);
@@ -50,12 +65,7 @@ impl Machine {
         let st = &mut self.g92;
         st.index = st.index.saturating_add(1);
         let st = *st;
-        // A `match`, not `?`: `?` copies the cycle (~300 bytes) once more on its way out.
-        match g92::cycle(&self.config, &self.params, &st, &mut self.g92_pull, self.pos, lead, line) {
-            Ok(c) => *run = Run::Multipass(c),
-            Err(a) => return Err(a),
-        }
-        Ok(())
+        g92::cycle(&self.config, &self.params, &st, &mut self.g92_pull, self.pos, lead, line).map(Some)
     }
 
     /// G76.FORMAT: a first block replaces the kept values of its code; omitted words fall back

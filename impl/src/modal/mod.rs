@@ -18,6 +18,7 @@ use codes::Codes;
 use contour_blocks::FirstValues;
 use cycle_vocab::{Alarm, AlarmCode, Config, Dialect, Move, Rule};
 use kind::{allowed, cycle_kind, Kind, COMMON};
+pub(crate) use plain::Plain;
 
 mod canned;
 mod codes;

@@ -14,6 +14,7 @@
 //! it straight into the caller's buffer ([`crate::Expander::fill`]).
 
 use super::{Kind, Machine, Mode, Vals};
+use crate::emit;
 use crate::g90::{self, CutCode};
 use crate::lex::{letter_mask, Block};
 use crate::run::Run;
@@ -36,6 +37,12 @@ impl Plain {
     #[inline(always)]
     pub(crate) fn is_move(self) -> bool {
         matches!(self.kind, Kind::Rapid | Kind::Feed | Kind::Thread(_))
+    }
+
+    /// The block is a pass of the G92 mode ([`Machine::plain_g92`]).
+    #[inline(always)]
+    pub(crate) fn is_g92(self) -> bool {
+        self.kind == Kind::G92
     }
 
     /// The G90/G94 code of a block that is a pass of that mode ([`Machine::plain_cut`]).
@@ -129,6 +136,16 @@ impl Machine {
         let axis = a.any();
         let v = Vals { u: a.u, w: a.w, x: a.x, z: a.z, ..Vals::default() };
         self.cut_cycle(code, false, &v, axis, b.line)
+    }
+
+    /// A plain block of the G92 mode ([`Plain::is_g92`]): its cycle, returned (none without
+    /// axis words) for the caller to build where it keeps it; inlined for that.
+    #[inline(always)]
+    pub(crate) fn plain_g92(&mut self, b: &Block) -> Result<Option<emit::Cycle>, Alarm> {
+        let a = self.axes(b)?;
+        let axis = a.any();
+        let v = Vals { u: a.u, w: a.w, x: a.x, z: a.z, ..Vals::default() };
+        self.g92_cycle(false, &v, axis, b.line)
     }
 
     /// A plain block that is no move: the G90/G94 or G92 handler writes its cycle into `run`
