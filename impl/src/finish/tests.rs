@@ -108,3 +108,54 @@ fn g70_alarms() {
     // Missing feed, P, Q as for G71.
     assert_eq!(alarm_of("N50 G0 X20\nN60 Z-10\nG70 P50 Q60"), al(AlarmCode::MissingWord, b'F', Rule::ComLead, 3));
 }
+
+/// G70's own `fill` (the stream takes a cycle's events one at a time when its `fill` writes
+/// none, so no expander trace shows a `fill` that writes nothing or leaves the contour to
+/// `next_event`; issue #33): against `next_event` through buffers of 1 … 12 and 64 events, every
+/// call with room writes or says done; and only the header, the return and the end come from
+/// `next_event` — three calls for the whole cycle, whatever the buffer — the contour's elements
+/// (a rapid, feeds with their own F, an arc; G70.FEED) being built in place. The iterator alone is
+/// called once per event and once more for the end (the counter's control).
+#[test]
+fn fill_builds_the_contour_in_place() {
+    use crate::contour::{Contour, Element, Kind};
+    use crate::finish::{probe, Cycle};
+    use crate::tests::assert_cycle_fill;
+    use cycle_vocab::Event;
+    let mut contour = Contour::new();
+    let e = Element::ZERO;
+    for el in [
+        Element { x: 20_000, z: 0, kind: Kind::Feed, feed: 1_000, ..e },
+        Element { x: 20_000, z: -10_000, kind: Kind::Feed, feed: 2_000, ..e },
+        Element { x: 30_000, z: -15_000, cx: 30_000, cz: -10_000, kind: Kind::Arc(true), ..e },
+        Element { x: 50_000, z: -15_000, kind: Kind::Rapid, ..e },
+    ] {
+        assert!(contour.push(el));
+    }
+    let start = (50_000, 5_000);
+    let cycle = Cycle::new(start, (400, 100), 500, &contour);
+    let sizes: std::vec::Vec<usize> = (1..=12).chain([64]).collect();
+    let next = |c: &mut Cycle, p: &mut (i64, i64)| c.next_event(p, &contour);
+    let fill = |c: &mut Cycle, p: &mut (i64, i64), out: &mut [Event]| c.fill(p, out, &contour);
+    assert_cycle_fill(&cycle, start, next, fill, &sizes);
+    let (mut c, mut pos, before) = (cycle, start, probe::calls());
+    let mut events = 0;
+    while c.next_event(&mut pos, &contour).is_some() {
+        events += 1;
+    }
+    // The header, four elements, the return.
+    assert_eq!((events, probe::calls() - before), (6, 7));
+    for &size in &sizes {
+        let filler = Event::Move(Move::rapid(i64::MIN, i64::MIN, Rule::PrjTrace));
+        let mut buffer = std::vec![filler; size];
+        let (mut c, mut pos, mut got, before) = (cycle, start, 0, probe::calls());
+        loop {
+            let (n, done) = c.fill(&mut pos, &mut buffer, &contour);
+            got += n;
+            if done {
+                break;
+            }
+        }
+        assert_eq!((got, probe::calls() - before), (events, 3), "buffer of {size}");
+    }
+}

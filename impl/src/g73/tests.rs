@@ -210,3 +210,53 @@ fn any_contour_is_taken() {
     let g71 = expand(&std::format!("G00 X40 Z5\nG71 U1 R0.5\nG71 P10 Q40 F0.2\n{contour}"), Config::default());
     assert_eq!(g71.alarm.map(|a| a.rule), Some(Rule::G71Monotone));
 }
+
+/// `fill` builds each pass — its header, the rapid to its start, its contour elements — in place,
+/// and takes only the rapid to C, the return to A and the end from `next_event` (issue #33: the
+/// two paths give the same events, as `fill_equals_the_iterator` checks, so only the count of
+/// `next_event` calls tells which ran): d = 4 passes over four elements, filled through buffers of
+/// 1 to 64 events, call `next_event` three times under g73.c = visit and twice under skip; the
+/// iterator alone is called once per event and once more for the end.
+#[test]
+fn fill_builds_the_passes_in_place() {
+    use crate::contour::{Contour, Element, Kind};
+    use crate::g73::{probe, Cycle, Words};
+    use cycle_vocab::Event;
+    let mut contour = Contour::new();
+    let e = Element::ZERO;
+    for el in [
+        Element { x: 0, z: 1_000, kind: Kind::Rapid, ..e },
+        Element { x: 12_000, z: -5_000, cx: 0, cz: -5_000, kind: Kind::Arc(false), ..e },
+        Element { x: 12_000, z: -15_000, kind: Kind::Feed, ..e },
+        Element { x: 20_000, z: -30_000, kind: Kind::Feed, ..e },
+    ] {
+        assert!(contour.push(el));
+    }
+    let a = (50_000, 10_000);
+    let w = Words { di: 18_000, dk: 5_000, d: 4, allowance: (500, 500), feed: 1_000, count_word: b'R', visit_c: true };
+    for (w, calls) in [(w, 3), (Words { visit_c: false, ..w }, 2)] {
+        let cycle = Cycle::new(a, &w, &contour, 10_000, 3).unwrap();
+        let (mut c, mut pos, before) = (cycle, a, probe::calls());
+        let mut events = 0;
+        while c.next_event(&mut pos, &contour).is_some() {
+            events += 1;
+        }
+        // 1 + 4 passes × (header, rapid, four elements) + the return (+ the rapid to C).
+        assert_eq!(events, calls - 1 + 4 * 6);
+        assert_eq!(probe::calls() - before, events + 1, "the iterator counts each call");
+        for size in (1..=12).chain([64]) {
+            let filler = Event::Move(Move::rapid(i64::MIN, i64::MIN, Rule::PrjTrace));
+            let mut buffer = std::vec![filler; size];
+            let (mut c, mut pos, mut got, before) = (cycle, a, 0, probe::calls());
+            loop {
+                let (n, done) = c.fill(&mut pos, &mut buffer, &contour);
+                got += n;
+                if done {
+                    break;
+                }
+            }
+            assert_eq!(got, events, "buffer of {size}");
+            assert_eq!(probe::calls() - before, calls, "buffer of {size}: next_event ran for a pass's event");
+        }
+    }
+}
