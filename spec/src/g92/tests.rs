@@ -58,3 +58,53 @@ fn no19_is_tenths_of_the_lead() {
     assert_eq!(no19_amount(1, 15, Grid::METRIC_ISB), 0); // 0.15 → 0
     assert_eq!(no19_amount(1, 50, Grid::METRIC_ISB), 1); // 0.5 → 1
 }
+
+/// The trace of `src` as canonical G-code lines (header dropped); the run must end clean.
+fn gcode(src: &str, config: &cycle_vocab::Config) -> Vec<String> {
+    let t = crate::expand(src.as_bytes(), config);
+    assert_eq!(t.alarm, None, "{}", t.to_gcode());
+    t.to_gcode().lines().skip(1).map(String::from).collect()
+}
+
+/// No.19 = 255, the top of its range (docs/INTERPRETATION.md "No.19": 0…255; M002 note 2,
+/// `002_…` line 68: J, K omitted pull out by No.19), is legal: `G92 X60 Z-40 F1` from X120 Z5,
+/// c = round(255 × 1 mm / 10) = 25.5 mm for J (45°) and K: the thread to Z-40 + 25.5, the
+/// pull-out to X60 + 2·25.5 = X111 at Z-40, ③ X120, ④ Z5.
+#[test]
+fn no19_at_the_top_of_its_range() {
+    let config = cycle_vocab::Config {
+        params: cycle_vocab::Params { no19_pullout: Some(255), ..cycle_vocab::Params::default() },
+        ..cycle_vocab::Config::default()
+    };
+    let lines = gcode("G0 X120 Z5\nG92 X60 Z-40 F1\n", &config);
+    assert_eq!(
+        lines[2..],
+        [
+            "G00 X60.000 Z5.000",
+            "G32 X60.000 Z-14.500 F1.0000",
+            "G32 X111.000 Z-40.000 F1.0000",
+            "G00 X120.000 Z-40.000",
+            "G00 X120.000 Z5.000",
+        ]
+    );
+}
+
+/// COM.LONGAXIS at |W| = |R| (docs/INTERPRETATION.md: "else X (including |W| = |R|)"; M002
+/// `002_…` line 49: Z is long only when its travel is the greater). `G92 X40 W-10 R10 F2 J1 K3`
+/// from X80 Z5: C = X60 Z5, D = X40 Z-5, |W| = |R| = 10 mm, X long. The pull-out (G92.PULLOUT,
+/// X long) starts K = 3 mm of X before D: X40 + 2·3 = X46, Z-5 + round(10·3/10) = Z-2; it ends at
+/// X40, Z-5 + J = Z-4 (toward A on Z).
+#[test]
+fn equal_travels_make_x_the_long_axis() {
+    let lines = gcode("G0 X80 Z5\nG92 X40 W-10 R10 F2 J1 K3\n", &cycle_vocab::Config::default());
+    assert_eq!(
+        lines[2..],
+        [
+            "G00 X60.000 Z5.000",
+            "G32 X46.000 Z-2.000 F2.0000",
+            "G32 X40.000 Z-4.000 F2.0000",
+            "G00 X80.000 Z-4.000",
+            "G00 X80.000 Z5.000",
+        ]
+    );
+}

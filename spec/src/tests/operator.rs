@@ -222,3 +222,34 @@ fn single_block_in_a_g92_run() {
     expected.extend(u[7..].iter().cloned());
     assert_eq!(lines(&t), expected);
 }
+
+/// G92.HOLD on the second of two starts (COM.MULTISTART: L2, the second at 180°). U: 0 `G00 X65
+/// Z5`; 1 the header; start 1: 2 – 6 as in the example; start 2: 7 `G00 X58.7 Z5`, 8 the cut,
+/// 9 the pull-out, 10, 11 the rapids. A cut is one start's pass, "from its first (the pass
+/// header when it is the pass's first start, else its first move)": held at 8, 1/2 (P = Z-11),
+/// the cut is repeated from 7, not from the header. G92.SINGLE: a stop after each start's
+/// return to A (after 6 and 11).
+#[test]
+fn second_start_is_its_own_cut() {
+    let src = "G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1 L2\n";
+    let u = u_lines(src, &Config::default());
+    assert_eq!(u[7..9], ["G00 X58.700 Z5.000 ; G92.PATH", "G32 X58.700 Z-27.000 F3.0000 Q180000 ; G92.PATH"]);
+    let t = play(src, &bit6(0), &[hold(8, 1, 2), Action::Start]);
+    assert_eq!(lines(&t)[..8], u[..8]);
+    assert_eq!(
+        lines(&t)[8..15],
+        [
+            "(PRESS HOLD AT X58.700 Z-11.000) ; G92.HOLD",
+            "G32 X58.700 Z-11.000 F3.0000 Q180000 ; G92.PATH",
+            "G32 X64.700 Z-12.000 F3.0000 Q180000 ; G92.HOLD",
+            "G00 X65.000 Z-12.000 ; G92.HOLD",
+            "G00 X65.000 Z5.000 ; G92.HOLD",
+            "(STOP FEED HOLD) ; G92.HOLD",
+            "(CYCLE START) ; OP.RESUME",
+        ]
+    );
+    assert_eq!(lines(&t)[15..], u[7..]);
+    let t = play(src, &Config::default(), &[single(true, 1)]);
+    let stops: Vec<usize> = lines(&t).iter().enumerate().filter(|(_, l)| l.starts_with("(STOP SINGLE BLOCK) ; G92.SINGLE")).map(|(i, _)| i).collect();
+    assert_eq!(stops, [7, 14]);
+}
