@@ -18,8 +18,10 @@
 //!   i − 1 (A.p for i = 1), so it **advances**, and short of E.p; then the return by e (none when
 //!   e = 0), after which the cycle is exactly at peck i + 1 of the same column;
 //! - **the last peck** (i = K): one feed to E.p **exactly** (advancing); the relief (from the
-//!   second column on, when Δd > 0); the rapid back to A.p; then either column j + 2's header and
-//!   the rapid to column j + 1 — which is **one step further** toward E.s (the last exactly at
+//!   second column on, when Δd > 0); the rapid back to A.p, after which the cycle is at column
+//!   j's end (`Cycle::after_column`);
+//! - **a column's end** (harness `g74_peck_column`): either column j + 2's header and the rapid
+//!   to column j + 1 — which is **one step further** toward E.s (the last exactly at
 //!   E.s, none past it) — after which the cycle is at its peck 1; or, after the last column (at
 //!   E.s), the rapid home to A and `None`, twice.
 //!
