@@ -320,7 +320,7 @@ cycle_harness::property! {
         states: "The G74/G75 cycle at a column's end (`Cycle::after_column`; the rest of g74_peck_step's induction; stubs as there): the next column's header and its peck 1 one step further toward E.s (the last at E.s), or home to A and None.",
         body: |src, scope| body(src, &scope),
         /// The Kani harness of a column's end (unwind as `g74_peck_step`).
-        kani: test(COLUMN) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "no verdict: at c593229 with CaDiCaL 1.5.3: 2.57 M variables, 9.39 M clauses (the state's phase after `after_column` is Header or Home, so each `next_event` call runs every phase), 27 queries answered (the last 101 s), the 28th open when the 900 s ran out (load 10–15)" },
+        kani: test(COLUMN) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "no verdict: at c593229 with CaDiCaL 1.5.3: 2.57 M variables, 9.39 M clauses (the state's phase after `after_column` is Header or Home, so each `next_event` call runs every phase), 27 queries answered (the last 101 s), the 28th open when the 900 s ran out (load 10–15); re-run at 632e021 (load falling from 10 to 4.5): 25 answered, the 26th open at 900 s" },
         tests {
             fn g74_peck_column_random = random(0x5eed_0748, 4) on COLUMN, random(0x5eed_0749, 4) on Scope { max_pos: 40, max_len: 12, case: 3 };
         }
