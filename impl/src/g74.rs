@@ -206,7 +206,8 @@ pub fn cycle(code: PeckCode, a: (i64, i64), w: &Words, max_passes: u32, line: u3
 }
 
 /// For the proofs (cycle-proofs `g74_peck_step`), not API: the counts, and the cycle resumed at
-/// a peck — the state `next_event` is in before it cuts peck `i` of column `col`.
+/// a peck — the state `next_event` is in before it cuts peck `i` of column `col` — or after a
+/// column.
 #[doc(hidden)]
 impl Cycle {
     /// The pecks per column and the columns, as `cycle` counted them.
@@ -217,6 +218,13 @@ impl Cycle {
     /// This cycle about to cut peck `i` (1-based) of column `col` (0-based).
     pub fn at_peck(&self, col: u64, i: u64) -> Cycle {
         Cycle { col, peck_i: i, phase: Phase::Peck, ..*self }
+    }
+
+    /// This cycle after column `col`'s way back to A.p (its `Back` phase): the next column's
+    /// header ahead, or the way home after the last column.
+    pub fn after_column(&self, col: u64) -> Cycle {
+        let next = col.saturating_add(1);
+        Cycle { col: next, peck_i: 1, phase: if next < self.columns { Phase::Header } else { Phase::Home }, ..*self }
     }
 }
 

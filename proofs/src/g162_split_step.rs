@@ -183,7 +183,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
         };
         check!(src, ended, "nothing after the pass at P");
         cover!(src, s == 0, "the last pass a full pass (D = 0)");
-        cover!(src, s >= 1 && s < 4, "the last pass an early target at P (a later one dropped)");
+        cover!(src, (1..4).contains(&s), "the last pass an early target at P (a later one dropped)");
         return Ok(());
     }
     src.assume(!r.last)?;

@@ -18,8 +18,10 @@
 //!   i − 1 (A.p for i = 1), so it **advances**, and short of E.p; then the return by e (none when
 //!   e = 0), after which the cycle is exactly at peck i + 1 of the same column;
 //! - **the last peck** (i = K): one feed to E.p **exactly** (advancing); the relief (from the
-//!   second column on, when Δd > 0); the rapid back to A.p; then either column j + 2's header and
-//!   the rapid to column j + 1 — which is **one step further** toward E.s (the last exactly at
+//!   second column on, when Δd > 0); the rapid back to A.p, after which the cycle is at column
+//!   j's end (`Cycle::after_column`);
+//! - **a column's end** (harness `g74_peck_column`): either column j + 2's header and the rapid
+//!   to column j + 1 — which is **one step further** toward E.s (the last exactly at
 //!   E.s, none past it) — after which the cycle is at its peck 1; or, after the last column (at
 //!   E.s), the rapid home to A and `None`, twice.
 //!
@@ -47,18 +49,21 @@ pub struct Scope {
     pub max_pos: i64,
     /// Largest Δi, Δk, e, Δd and feed.
     pub max_len: i64,
-    /// Which states: 0 the start, 1 a peck before the last, 2 the last peck, 3 any of them.
+    /// Which states: 0 the start, 1 a peck before the last, 2 the last peck, 3 a column's end,
+    /// 4 any of them.
     pub case: u32,
 }
 
 /// Lengths 0…N, positions within ±2^60 (a program of fewer than 2^30 blocks, lib.rs: beyond, the
 /// header's 2·D may exceed 2^63 and saturate — a range the register does not reach).
-pub const FULL: Scope = Scope { max_pos: 1 << 60, max_len: MAX_LENGTH, case: 3 };
+pub const FULL: Scope = Scope { max_pos: 1 << 60, max_len: MAX_LENGTH, case: 4 };
 
-/// The Kani harnesses: one per kind of state (the start, a peck before the last, the last peck).
+/// The Kani harnesses: one per kind of state (the start, a peck before the last, the last peck,
+/// a column's end).
 pub const START: Scope = Scope { case: 0, ..FULL };
 pub const STEP: Scope = Scope { case: 1, ..FULL };
 pub const LAST: Scope = Scope { case: 2, ..FULL };
+pub const COLUMN: Scope = Scope { case: 3, ..FULL };
 
 /// The cycle's frame and words, as the register states them (`i128`).
 struct Frame {
@@ -183,7 +188,7 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
         Some(Event::Pass(Pass { index: index as u32, kind: PassKind::Rough, diameter_depth, rule: column_rule }))
     };
 
-    let case = if scope.case < 3 { scope.case } else { src.choose(3) };
+    let case = if scope.case < 4 { scope.case } else { src.choose(4) };
     match case {
         0 => {
             // The start: column 1's header, then peck 1 of column 0 with the tool at A.
@@ -211,8 +216,8 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
             }
             cover!(src, i >= 2 && j >= 1, "a middle peck of a later column");
         }
-        _ => {
-            // The last peck of column j, then the relief, the way back and the next column.
+        2 => {
+            // The last peck of column j, then the relief and the way back to A.p.
             src.assume(i == k)?;
             let mut cy = cy0.at_peck(j, i);
             check!(src, pe(k) == f.e.0, "G74.PECK: the last peck's end is E.p");
@@ -224,6 +229,16 @@ pub fn body<S: Source>(src: &mut S, scope: &Scope) -> Outcome {
                 check!(src, cy.next_event(&mut pos) == rapid(f.e.0, s_now, relief_rule), "G74.RELIEF: from the second column on, the relief by Δd at the bottom");
             }
             check!(src, cy.next_event(&mut pos) == rapid(f.a.0, s_now, column_rule), "G74.COLUMN: a rapid along the peck axis back to A.p");
+            check!(src, cy == cy0.after_column(j) && pos == f.machine(f.a.0, s_now), "then the cycle is at column j's end, the tool at A.p");
+            cover!(src, j >= 1 && f.relief > 0, "a relief");
+        }
+        _ => {
+            // A column's end (after its way back to A.p, the tool there, after any relief): the
+            // next column, or home.
+            src.assume(i == k)?;
+            let mut cy = cy0.after_column(j);
+            let s_now = if j >= 1 && f.relief > 0 { s - along(f.relief_dir, f.relief) } else { s };
+            pos = f.machine(f.a.0, s_now);
             if j + 1 < columns {
                 check!(src, cy.next_event(&mut pos) == header(j + 2), "G74.COLUMN: one header per column, numbered");
                 let s1 = col(j + 1);
@@ -259,16 +274,16 @@ cycle_harness::property! {
         rules: ["G74.FORMAT", "G74.PECK", "G74.E", "G74.COLUMN", "G74.RELIEF", "G75.FORMAT", "G75.PECK", "G75.COLUMN", "G75.RELIEF", "PRJ.MAXPASS"],
         states: "The G74/G75 cycle by induction over its states (i·len and ⌈D/len⌉ stubbed by smt/ lemma 16's table, checked by the drivers): refused exactly in the register's order, K·C > max_passes last; counts K pecks, C columns; from the start, from any peck before the last (one peck further, advancing, short of E, its return, then at peck i + 1) and from the last peck (exactly at E, relief, back, then the next column one step further — the last at E.s — or home and None).",
         body: |src, scope| body(src, &scope),
-        /// The Kani harness of the peck before the last (START and LAST: below). Unwind 3:
+        /// The Kani proof of the peck before the last (START, LAST and COLUMN: below). Unwind 3:
         /// `next_event`'s loop runs at most two phases per call (skipped return, relief or rapid to the column, then a move); the harness has no loop.
-        kani: test(STEP) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "not measured to a verdict: the first G74 harness (all three states in one, unwind 4; CaDiCaL 1.5.3, load 11–13) was stopped after 2 min 13 s, still in symbolic execution, to give the shared Kani lock to the G83 harnesses; split per state (unwind 3, as G83's, which verified in 72–188 s) it was not run in this session (time)" },
+        kani: proof(STEP) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], measured: "SUCCESSFUL (2138 checks, 31 unreachable: the other states'; 3/5 covers, 2 unreachable: the other states'), 810.4 s, 1.96 GB" },
         tests {
             /// Positions −2, −1, 1, 2 and lengths 0…2 (each draw's 2 smallest and largest), both
             /// codes, both readings, every state.
-            fn g74_peck_step_exhaustive_small = exhaustive(2, 8_000_000) on Scope { max_pos: 2, max_len: 2, case: 3 };
+            fn g74_peck_step_exhaustive_small = exhaustive(2, 8_000_000) on Scope { max_pos: 2, max_len: 2, case: 4 };
             /// The full ranges (one draw in eight an edge); and small ones, where cycles have few pecks
             /// and columns.
-            fn g74_peck_step_random = random(0x5eed_0741, 2) on FULL, random(0x5eed_0742, 2) on Scope { max_pos: 40, max_len: 12, case: 3 };
+            fn g74_peck_step_random = random(0x5eed_0741, 2) on FULL, random(0x5eed_0742, 2) on Scope { max_pos: 40, max_len: 12, case: 4 };
         }
     }
 }
@@ -278,8 +293,8 @@ cycle_harness::property! {
         rules: ["G74.FORMAT", "G74.PECK", "G74.E", "G74.COLUMN", "G74.RELIEF", "G75.FORMAT", "G75.PECK", "G75.COLUMN", "G75.RELIEF", "PRJ.MAXPASS"],
         states: "The G74/G75 cycle's start (the induction base of g74_peck_step; stubs as there): refused exactly in the register's order, the counts K and C, then column 1's header and the state at peck 1 of column 0, the tool at A.",
         body: |src, scope| body(src, &scope),
-        /// The Kani harness of the start (unwind as `g74_peck_step`).
-        kani: test(START) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "not measured to a verdict: the all-states G74 harness (unwind 4; CaDiCaL 1.5.3, load 11–13) was stopped after 2 min 13 s, still in symbolic execution, to give the shared Kani lock to the G83 harnesses; this start harness (one state, unwind 3) hit its 420 s limit while Kani was still compiling the crate (load 12–15, a workspace build alongside: no CBMC started); not run again (time)" },
+        /// The Kani proof of the start (unwind as `g74_peck_step`).
+        kani: proof(START) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], measured: "SUCCESSFUL (2138 checks, 47 unreachable: the other states'; 2/5 covers, 3 unreachable: the other states'), 132.6 s, 0.97 GB" },
         tests {
             fn g74_peck_start_random = random(0x5eed_0744, 4) on START, random(0x5eed_0745, 4) on Scope { max_pos: 40, max_len: 12, case: 0 };
         }
@@ -289,12 +304,25 @@ cycle_harness::property! {
 cycle_harness::property! {
     pub const LAST_PROPERTY = g74_peck_last in crate::PROPERTIES {
         rules: ["G74.FORMAT", "G74.PECK", "G74.E", "G74.COLUMN", "G74.RELIEF", "G75.FORMAT", "G75.PECK", "G75.COLUMN", "G75.RELIEF", "PRJ.MAXPASS"],
-        states: "The G74/G75 cycle's last peck of any column (the rest of g74_peck_step's induction; stubs as there): one feed exactly to E.p, advancing; the relief from the second column; back to A.p; then the next column's header and its peck 1 one step further toward E.s (the last at E.s), or home to A and None.",
+        states: "The G74/G75 cycle's last peck of any column (the rest of g74_peck_step's induction; stubs as there): one feed exactly to E.p, advancing; the relief from the second column; back to A.p; then the cycle at that column's end (g74_peck_column).",
         body: |src, scope| body(src, &scope),
         /// The Kani harness of the last peck (unwind as `g74_peck_step`).
-        kani: test(LAST) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "not measured to a verdict: the first G74 harness (all three states in one, unwind 4; CaDiCaL 1.5.3, load 11–13) was stopped after 2 min 13 s, still in symbolic execution, to give the shared Kani lock to the G83 harnesses; split per state (unwind 3, as G83's, which verified in 72–188 s) it was not run in this session (time)" },
+        kani: test(LAST) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "no verdict: split at the column's end (this state: the last peck, the relief, the way back to A.p; `g74_peck_column` the rest), at 51fe589 with CaDiCaL 1.5.3: 1.22 M variables, 4.29 M clauses, 17 queries answered, the 18th open for 9 min when the 900 s ran out (load 9 rising to 15, a workspace build alongside); before the split (the whole last-peck state, to the next column or home): 3.78 M variables, 14.3 M clauses, its first query alone 162 s (measured on the planted-bug run of that harness, stopped at 5 min); before that, the all-states harness (unwind 4) was stopped after 2 min 13 s, still in symbolic execution" },
         tests {
             fn g74_peck_last_random = random(0x5eed_0746, 4) on LAST, random(0x5eed_0747, 4) on Scope { max_pos: 40, max_len: 12, case: 2 };
+        }
+    }
+}
+
+cycle_harness::property! {
+    pub const COLUMN_PROPERTY = g74_peck_column in crate::PROPERTIES {
+        rules: ["G74.FORMAT", "G74.PECK", "G74.E", "G74.COLUMN", "G74.RELIEF", "G75.FORMAT", "G75.PECK", "G75.COLUMN", "G75.RELIEF", "PRJ.MAXPASS"],
+        states: "The G74/G75 cycle at a column's end (`Cycle::after_column`; the rest of g74_peck_step's induction; stubs as there): the next column's header and its peck 1 one step further toward E.s (the last at E.s), or home to A and None.",
+        body: |src, scope| body(src, &scope),
+        /// The Kani harness of a column's end (unwind as `g74_peck_step`).
+        kani: test(COLUMN) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "no verdict: at c593229 with CaDiCaL 1.5.3: 2.57 M variables, 9.39 M clauses (the state's phase after `after_column` is Header or Home, so each `next_event` call runs every phase), 27 queries answered (the last 101 s), the 28th open when the 900 s ran out (load 10–15); re-run at 632e021 (load falling from 10 to 4.5): 25 answered, the 26th open at 900 s" },
+        tests {
+            fn g74_peck_column_random = random(0x5eed_0748, 4) on COLUMN, random(0x5eed_0749, 4) on Scope { max_pos: 40, max_len: 12, case: 3 };
         }
     }
 }

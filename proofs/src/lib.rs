@@ -79,6 +79,7 @@ pub const PROPERTIES: &[Property] = &[
     peck_toward::PROPERTY,
     g74_peck_step::START_PROPERTY,
     g74_peck_step::LAST_PROPERTY,
+    g74_peck_step::COLUMN_PROPERTY,
     g83_peck_step::START_PROPERTY,
     g83_peck_step::LAST_PROPERTY,
     g162_split_step::START_PROPERTY,

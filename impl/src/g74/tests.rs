@@ -244,3 +244,28 @@ fn bulk_writes_the_pecks_before_the_last() {
     assert!(!c.in_bulk());
     assert_eq!(c.next_event(&mut pos), Some(Event::Move(Move::feed(0, -12_000, f, p))));
 }
+
+/// `Cycle::after_column(j)` (the proof harnesses' state constructor) is the state the running
+/// cycle is in right after column j's way back to A.p: G74 with columns and reliefs, G75, and a
+/// single column.
+#[test]
+fn after_column_is_the_state_after_a_column() {
+    use super::Phase;
+    use crate::g74::{cycle, PeckCode, Words};
+    let w = Words { end: (40_000, -5_000), di: 3_000, dk: 2_000, relief: 200, e: 500, feed: 500, relief_minus_z: false };
+    let cases = [
+        (cycle(PeckCode::G74, (20_000, 1_000), &w, 10_000, 2).unwrap(), (20_000, 1_000)),
+        (cycle(PeckCode::G75, (52_000, -10_000), &Words { end: (40_000, -20_000), ..w }, 10_000, 2).unwrap(), (52_000, -10_000)),
+        (cycle(PeckCode::G74, (40_000, 1_000), &w, 10_000, 2).unwrap(), (40_000, 1_000)),
+    ];
+    for (c0, start) in cases {
+        let (mut c, mut pos, mut seen) = (c0, start, 0);
+        while c.next_event(&mut pos).is_some() {
+            if matches!(c.phase, Phase::Header | Phase::Home) && c.col >= 1 && c.peck_i == 1 {
+                assert_eq!(c, c0.after_column(c.col - 1));
+                seen += 1;
+            }
+        }
+        assert_eq!(seen, c0.columns, "every column's end seen");
+    }
+}
