@@ -4,8 +4,7 @@
 //! unit begun by `next_event` or where less room than a unit is left. The events are those of
 //! `next_event`, in the same order.
 
-use crate::emit::moves;
-use cycle_vocab::{Event, Move};
+use cycle_vocab::Event;
 
 /// The events of one unit, each written in place into the next of the caller's slots; an event
 /// past the last slot is not written (the units' sizes are their most events).
@@ -29,19 +28,11 @@ impl<'a> Unit<'a> {
         }
     }
 
-    /// Writes the move `m`, if there is one, as [`emit`] makes it an event: none for a move to
-    /// where the machine stands (PRJ.NOOP), else it moves the machine (`pos`). The event is
-    /// built in its slot (an event made before the slot is known is built on the stack, then
-    /// copied).
+    /// Writes `e` if there is one (a move that does not move is none: PRJ.NOOP).
     #[inline(always)]
-    pub(crate) fn put_move(&mut self, m: Option<Move>, pos: &mut (i64, i64)) {
-        if let Some(m) = m {
-            if moves((m.x, m.z), pos) {
-                if let Some(slot) = self.slots.get_mut(self.n) {
-                    *slot = Event::Move(m);
-                    self.n += 1;
-                }
-            }
+    pub(crate) fn put_some(&mut self, e: Option<Event>) {
+        if let Some(e) = e {
+            self.put(e);
         }
     }
 

@@ -95,7 +95,7 @@ impl Cycle {
     }
 
     /// The move of `step` for the current start, or `None` when the step has no move.
-    #[inline(always)]
+    #[inline]
     fn move_at(&self, step: u8) -> Option<Move> {
         let p = &self.path;
         let thread = |(x, z): (i64, i64), rule: Rule| Some(Move::thread(x, z, p.lead, self.angle, rule));
@@ -263,7 +263,7 @@ impl Cycle {
             unit.put(h);
         }
         for step in 0..STEPS {
-            unit.put_move(self.move_at(step), pos);
+            unit.put_some(self.move_at(step).and_then(|m| emit(m, pos)));
         }
         self.step = STEPS;
         unit.written()
@@ -294,17 +294,9 @@ pub const START_EVENTS: usize = 1 + STEPS as usize;
 /// which is not emitted (PRJ.NOOP).
 #[inline(always)]
 pub fn emit(m: Move, pos: &mut (i64, i64)) -> Option<Event> {
-    moves((m.x, m.z), pos).then_some(Event::Move(m))
-}
-
-/// Whether a move to `to` moves the machine from `pos` (PRJ.NOOP: a move to the current
-/// position is not emitted); if it does, `pos` is `to`. (The end point by value, not the move
-/// by reference: a move whose address is taken is built on the stack, then copied.)
-#[inline(always)]
-pub fn moves(to: (i64, i64), pos: &mut (i64, i64)) -> bool {
-    if to == *pos {
-        return false;
+    if (m.x, m.z) == *pos {
+        return None;
     }
-    *pos = to;
-    true
+    *pos = (m.x, m.z);
+    Some(Event::Move(m))
 }

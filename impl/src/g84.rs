@@ -89,15 +89,15 @@ impl Batch<TAP_EVENTS> for Cycle {
         let lv = self.lv;
         let mut unit = Unit::new(slots);
         unit.put(lv.header(rule));
-        unit.put_move(Some(Move::rapid(lv.x, lv.r_level, rule)), pos);
-        unit.put_move(Some(Move::thread(lv.x, lv.bottom, self.lead, 0, rule)), pos);
+        unit.put_some(emit(Move::rapid(lv.x, lv.r_level, rule), pos));
+        unit.put_some(emit(Move::thread(lv.x, lv.bottom, self.lead, 0, rule), pos));
         if self.dwell > 0 {
             unit.put(Event::Dwell(Dwell { ms: self.dwell, rule }));
         }
         unit.put(Event::Spindle(Spindle { state: SpindleState::Reverse, rule }));
-        unit.put_move(Some(Move::thread(lv.x, lv.r_level, self.lead, 0, rule)), pos);
+        unit.put_some(emit(Move::thread(lv.x, lv.r_level, self.lead, 0, rule), pos));
         unit.put(Event::Spindle(Spindle { state: SpindleState::Forward, rule }));
-        unit.put_move(Some(Move::rapid(lv.x, lv.initial, rule)), pos);
+        unit.put_some(emit(Move::rapid(lv.x, lv.initial, rule), pos));
         self.step = TAP_EVENTS as u8;
         unit.written()
     }

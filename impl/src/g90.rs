@@ -8,7 +8,7 @@
 //! from panicking.
 
 use crate::batch::{self, Batch, Unit};
-use crate::emit::{emit, moves};
+use crate::emit::emit;
 use cycle_vocab::{Alarm, AlarmCode, Event, Move, Pass, PassKind, Rule};
 
 /// Which cutting cycle.
@@ -220,7 +220,7 @@ impl Batch<CUT_EVENTS> for Cycle {
             unit.put(Event::Pass(h));
         }
         for step in 0..STEPS {
-            unit.put_move(self.move_at(step), pos);
+            unit.put_some(self.move_at(step).and_then(|m| emit(m, pos)));
         }
         self.step = STEPS;
         unit.written()
@@ -245,7 +245,9 @@ impl Cycle {
         let mut at = *pos;
         let mut n = 0;
         let mut put = |m: Move| {
-            if moves((m.x, m.z), &mut at) {
+            // PRJ.NOOP, as `emit`: a move to where the machine stands is not written.
+            if (m.x, m.z) != at {
+                at = (m.x, m.z);
                 if let Some(slot) = slots.get_mut(n) {
                     *slot = Event::Move(m);
                 }

@@ -3,6 +3,7 @@
 
 use super::{Cycle, STEPS};
 use crate::batch::{self, Batch, Unit};
+use crate::emit::emit;
 use cycle_vocab::Event;
 
 /// The most events of one pass: its header and five moves.
@@ -39,7 +40,7 @@ impl Batch<PASS_EVENTS> for Cycle {
             unit.put(Event::Pass(self.pass_header()));
         }
         for step in 0..STEPS {
-            unit.put_move(self.move_at(step), pos);
+            unit.put_some(self.move_at(step).and_then(|m| emit(m, pos)));
         }
         self.step = STEPS;
         unit.written()

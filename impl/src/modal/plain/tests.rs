@@ -89,6 +89,8 @@ const PROGRAMS: &[&str] = &[
     "G0 X100 Z2\nG94 X50 Z1 F0.2\nZ0\nW-1\nX40\nZ-1 W-1\n",
     "G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\nX58\nU-0.5\nW-1\nN5\n",
     "G0 X65 Z5\nG92 X58.7 Z-28 F3\nX58 U-1\n",
+    // G92 of two starts (L2): its plain passes are run from `Run`, not written whole.
+    "G0 X65 Z5\nG92 X58.7 Z-28 F3 L2\nX58\nX57.5\n",
     // A plain block after G01 under G96 (a feed: allowed), then the rapid that is not.
     "G0 X30 Z5\nG50 S2000\nG96 S100\nG1 Z4 F0.2\nZ3\nG0 X40\nZ5\n",
     "G0 X30 Z5\nG50 S2000\nG96 S100 G1 Z4 F0.2\nG0\nZ3\n",
@@ -129,6 +131,12 @@ fn plain_blocks_give_moves_and_alarms() {
     assert_eq!(k, Some(Alarm::new(AlarmCode::MissingWord, Some(b'K'), Rule::G34, 3)));
     let f = same(PROGRAMS[11], Config::default()).1;
     assert_eq!(f, Some(Alarm::new(AlarmCode::MissingWord, Some(b'F'), Rule::ComLead, 2)));
+    // The L2 G92 run: three passes, each cut at two start angles (0 and 180°).
+    let (starts, alarm) = same(PROGRAMS[17], Config::default());
+    assert_eq!(alarm, None);
+    assert_eq!(starts.iter().filter(|e| matches!(e, Event::Pass(_))).count(), 3, "{starts:?}");
+    let second = |e: &Event| matches!(e, Event::Move(m) if m.angle == 180_000);
+    assert_eq!(starts.iter().filter(|e| second(e)).count(), 3 * 2, "{starts:?}");
 }
 
 /// Which blocks take the plain path: none with a G code or another word, none under an arc
