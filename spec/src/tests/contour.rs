@@ -102,6 +102,10 @@ fn contour_block_checks() {
         (&["G01 X20", "Z-5 M98"], (WordNotAllowed, Some('M'), Rule::CntNosub, 5)),
         (&["G01 X20 M99"], (WordNotAllowed, Some('M'), Rule::CntNosub, 4)),
         (&["G01 X20", "Z-5 M3"], (WordNotAllowed, Some('M'), Rule::CntWords, 5)),
+        // M98, M99 "by exact value": M98.0 and M99.00 are M98 and M99.
+        (&["G01 X20", "Z-5 M98.0"], (WordNotAllowed, Some('M'), Rule::CntNosub, 5)),
+        (&["G01 X20", "Z-5 M99.00"], (WordNotAllowed, Some('M'), Rule::CntNosub, 5)),
+        (&["G01 X20", "Z-5 M9.8"], (WordNotAllowed, Some('M'), Rule::CntWords, 5)),
         (&["G01 X20", "Z-5 P1"], (WordNotAllowed, Some('P'), Rule::CntWords, 5)),
         (&["G01 X20", "Z-5 O1"], (WordNotAllowed, Some('O'), Rule::CntWords, 5)),
         (&["G01 X20", "Z-5 J1"], (WordNotAllowed, Some('J'), Rule::CntWords, 5)),
@@ -259,4 +263,21 @@ fn g70_arcs_by_ik() {
         assert_eq!((a.0, a.1, a.2, a.3, a.4), expect[i % 8]);
         assert_eq!(a.5, if i < 8 { Rule::ArcIk } else { Rule::G70Path });
     }
+}
+
+/// G70.PATH: "the first move goes to P₀ even when the ns block writes no axis word (with U/W:
+/// from S to S + (U, W))"; G70.FEED: the ns block's F replaces G70's from that block on. S = X40
+/// Z2; the ns block `N10 G1 F0.3` ends at S, translated by U1 W0.5 to P₀ = X41 Z2.5; N20 to X30
+/// Z-10 translated to X31 Z-9.5; then the rapid back to S (G70.RETURN).
+#[test]
+fn g70_first_move_to_p0_without_axis_words() {
+    let src = "G0 X40 Z2\nN10 G1 F0.3\nN20 X30 Z-10\nG0 X40 Z2\nG70 P10 Q20 U1 W0.5 F0.1\n";
+    let t = run(src);
+    let text = t.to_gcode();
+    let g70: Vec<&str> = text.lines().skip(1).skip_while(|l| !l.starts_with("(PASS")).collect();
+    assert_eq!(
+        g70[1..],
+        ["G01 X41.000 Z2.500 F0.3000", "G01 X31.000 Z-9.500 F0.3000", "G00 X40.000 Z2.000"]
+    );
+    assert_eq!(passes(&t), [(1, cycle_vocab::PassKind::Finish, 1_000, Rule::G70Path)]);
 }
