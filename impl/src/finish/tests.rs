@@ -95,6 +95,9 @@ fn g70_alarms() {
         long += "W-0.01\n";
     }
     assert_eq!(a(&long, "G70 P50 Q60"), al(AlarmCode::ContourTooLong, b'Q', Rule::CntMax, 1_003));
+    // Exactly 1 000 blocks from N(ns) to the G70 block, none N(nf): not too long, not found.
+    long.truncate(long.len() - "W-0.01\n".len());
+    assert_eq!(a(&long, "G70 P50 Q60"), nq(1_002));
     // The contour's checks (on its lines) and CNT.FIRST (on the ns block's line). A contour
     // met in program order runs as ordinary blocks first, so only what is legal there and
     // refused in a contour reaches the G70: an M code, an O word, a G04…
