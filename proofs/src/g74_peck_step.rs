@@ -306,8 +306,8 @@ cycle_harness::property! {
         rules: ["G74.FORMAT", "G74.PECK", "G74.E", "G74.COLUMN", "G74.RELIEF", "G75.FORMAT", "G75.PECK", "G75.COLUMN", "G75.RELIEF", "PRJ.MAXPASS"],
         states: "The G74/G75 cycle's last peck of any column (the rest of g74_peck_step's induction; stubs as there): one feed exactly to E.p, advancing; the relief from the second column; back to A.p; then the cycle at that column's end (g74_peck_column).",
         body: |src, scope| body(src, &scope),
-        /// The Kani harness of the last peck (unwind as `g74_peck_step`).
-        kani: test(LAST) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "no verdict: split at the column's end (this state: the last peck, the relief, the way back to A.p; `g74_peck_column` the rest), at 51fe589 with CaDiCaL 1.5.3: 1.22 M variables, 4.29 M clauses, 17 queries answered, the 18th open for 9 min when the 900 s ran out (load 9 rising to 15, a workspace build alongside); before the split (the whole last-peck state, to the next column or home): 3.78 M variables, 14.3 M clauses, its first query alone 162 s (measured on the planted-bug run of that harness, stopped at 5 min); before that, the all-states harness (unwind 4) was stopped after 2 min 13 s, still in symbolic execution" },
+        /// The Kani proof of the last peck (unwind as `g74_peck_step`).
+        kani: proof(LAST) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], measured: "SUCCESSFUL (2236 checks, 38 unreachable: the other states'; 3/6 covers, 3 unreachable: the other states'), 330.8 s, 1.57 GB" },
         tests {
             fn g74_peck_last_random = random(0x5eed_0746, 4) on LAST, random(0x5eed_0747, 4) on Scope { max_pos: 40, max_len: 12, case: 2 };
         }
@@ -319,8 +319,8 @@ cycle_harness::property! {
         rules: ["G74.FORMAT", "G74.PECK", "G74.E", "G74.COLUMN", "G74.RELIEF", "G75.FORMAT", "G75.PECK", "G75.COLUMN", "G75.RELIEF", "PRJ.MAXPASS"],
         states: "The G74/G75 cycle at a column's end (`Cycle::after_column`; the rest of g74_peck_step's induction; stubs as there): the next column's header and its peck 1 one step further toward E.s (the last at E.s), or home to A and None.",
         body: |src, scope| body(src, &scope),
-        /// The Kani harness of a column's end (unwind as `g74_peck_step`).
-        kani: test(COLUMN) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], why: "no verdict: at c593229 with CaDiCaL 1.5.3: 2.57 M variables, 9.39 M clauses (the state's phase after `after_column` is Header or Home, so each `next_event` call runs every phase), 27 queries answered (the last 101 s), the 28th open when the 900 s ran out (load 10–15); re-run at 632e021 (load falling from 10 to 4.5): 25 answered, the 26th open at 900 s" },
+        /// The Kani proof of a column's end (unwind as `g74_peck_step`).
+        kani: proof(COLUMN) { unwind: 3, stubs: [cycle_impl::g74::span => crate::peck_parts::stubs::span_spec, cycle_impl::g74::ceil_div => crate::peck_parts::stubs::ceil_div_spec, cycle_impl::g74::toward => crate::peck_parts::stubs::toward_spec], measured: "SUCCESSFUL (2236 checks, 28 unreachable: the other states'; 4/6 covers, 2 unreachable: the other states'), 464.7 s, 3.44 GB" },
         tests {
             fn g74_peck_column_random = random(0x5eed_0748, 4) on COLUMN, random(0x5eed_0749, 4) on Scope { max_pos: 40, max_len: 12, case: 3 };
         }
