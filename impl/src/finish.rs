@@ -46,7 +46,7 @@ impl Cycle {
     /// each move, by construction of the contour), so at most one move is skipped per call.
     pub fn next_event(&mut self, pos: &mut (i64, i64), contour: &Contour) -> Option<Event> {
         #[cfg(test)]
-        probe::count();
+        crate::probe::count();
         if let Some(h) = self.header.take() {
             return Some(Event::Pass(h));
         }
@@ -133,27 +133,6 @@ impl Cycle {
         }
         *pos = at;
         n
-    }
-}
-
-/// Test only: the calls of [`Cycle::next_event`] on this thread, so that a test sees which events
-/// `fill` builds in place (the contour) and which it takes from `next_event` (issue #33: the two
-/// paths give the same events, so no trace tells them apart).
-#[cfg(test)]
-mod probe {
-    extern crate std;
-    use core::cell::Cell;
-
-    std::thread_local! {
-        static CALLS: Cell<usize> = const { Cell::new(0) };
-    }
-
-    pub fn count() {
-        CALLS.with(|c| c.set(c.get() + 1));
-    }
-
-    pub fn calls() -> usize {
-        CALLS.with(Cell::get)
     }
 }
 

@@ -117,7 +117,7 @@ impl Cycle {
     /// elements each move), so at most three moves (with the rapid to C) are skipped per call.
     pub fn next_event(&mut self, pos: &mut (i64, i64), contour: &Contour) -> Option<Event> {
         #[cfg(test)]
-        probe::count();
+        crate::probe::count();
         loop {
             let m = match self.phase {
                 // G73 point C = A + (2Δi + Δu, Δk + Δw) (diameter count; not emitted when C = A).
@@ -226,27 +226,6 @@ impl Cycle {
         }
         *pos = at;
         n
-    }
-}
-
-/// Test only: the calls of [`Cycle::next_event`] on this thread, so that a test sees which events
-/// `fill` builds in place (the passes) and which it takes from `next_event` (issue #33: the two
-/// paths give the same events, so no trace tells them apart).
-#[cfg(test)]
-mod probe {
-    extern crate std;
-    use core::cell::Cell;
-
-    std::thread_local! {
-        static CALLS: Cell<usize> = const { Cell::new(0) };
-    }
-
-    pub fn count() {
-        CALLS.with(|c| c.set(c.get() + 1));
-    }
-
-    pub fn calls() -> usize {
-        CALLS.with(Cell::get)
     }
 }
 

@@ -94,6 +94,8 @@ mod multipass;
 pub mod number;
 mod operator;
 mod passes;
+#[cfg(test)]
+mod probe;
 /// Public (hidden) only so that the proof harnesses (`cycle-proofs`) can check the G92 pull-out
 /// amounts and geometry below the lexer; not part of the API.
 #[doc(hidden)]

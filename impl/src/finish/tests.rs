@@ -122,7 +122,8 @@ fn g70_alarms() {
 #[test]
 fn fill_builds_the_contour_in_place() {
     use crate::contour::{Contour, Element, Kind};
-    use crate::finish::{probe, Cycle};
+    use crate::finish::Cycle;
+    use crate::probe;
     use crate::tests::assert_cycle_fill;
     use cycle_vocab::Event;
     let mut contour = Contour::new();

@@ -220,7 +220,8 @@ fn any_contour_is_taken() {
 #[test]
 fn fill_builds_the_passes_in_place() {
     use crate::contour::{Contour, Element, Kind};
-    use crate::g73::{probe, Cycle, Words};
+    use crate::g73::{Cycle, Words};
+    use crate::probe;
     use cycle_vocab::Event;
     let mut contour = Contour::new();
     let e = Element::ZERO;
