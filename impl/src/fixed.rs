@@ -68,6 +68,13 @@ pub fn sat(v: i128) -> i64 {
     i64::try_from(v).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
 }
 
+/// `|a − b|`, saturating at `i64::MAX` (the same as `sat` of the exact `i128` difference's
+/// magnitude, in fewer steps): a pass header's infeed depth.
+#[inline]
+pub fn abs_diff(a: i64, b: i64) -> i64 {
+    i64::try_from(a.abs_diff(b)).unwrap_or(i64::MAX)
+}
+
 /// `num / den` rounded half up; `den = 0` gives 0 (callers never divide by zero).
 pub fn div_round(num: u128, den: u128) -> u128 {
     if den == 0 {

@@ -9,6 +9,7 @@
 
 use crate::batch::{self, Batch, Unit};
 use crate::emit::emit;
+use crate::fixed::abs_diff;
 use cycle_vocab::{Alarm, AlarmCode, Event, Move, Pass, PassKind, Rule};
 
 /// Which cutting cycle.
@@ -87,11 +88,6 @@ fn sub(a: i64, b: i64) -> i64 {
 
 fn add(a: i64, b: i64) -> i64 {
     a.saturating_add(b)
-}
-
-/// `|a − b|`, saturating (the same as `sub(a, b).saturating_abs()`, in fewer steps).
-fn abs_diff(a: i64, b: i64) -> i64 {
-    i64::try_from(a.abs_diff(b)).unwrap_or(i64::MAX)
 }
 
 /// G90.TAPER / G94.TAPER: a taper `t` and travel `travel` of different signs need

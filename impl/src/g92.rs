@@ -1,6 +1,6 @@
 //! G92 single thread cycle (M002): the modal run and the cycle's checks and path.
 
-use crate::fixed::sat;
+use crate::fixed::{abs_diff, sat};
 use crate::emit::{Cycle, Path, Plan};
 use crate::passes::Cut;
 use crate::pullout::{g92_amounts, offsets, tenths_of_lead, travel, Amounts, Offsets};
@@ -153,7 +153,7 @@ pub fn cycle(
         rule_pull: Rule::G92Pullout,
     };
     // Pass header: the X infeed from the start point, |A.x − C.x| on diameter.
-    let depth = i64::try_from(a.0.abs_diff(cx)).unwrap_or(i64::MAX);
+    let depth = abs_diff(a.0, cx);
     let header = Pass { index: st.index, kind: PassKind::Rough, diameter_depth: depth, rule: Rule::G92Path };
     Ok(Cycle::new(path, Plan::Single(header), Cut { p0: (cx, a.1), end: d }))
 }
