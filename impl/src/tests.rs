@@ -319,6 +319,24 @@ pub fn assert_fill_agrees(program: &str, config: Config, sizes: &[usize]) {
     }
 }
 
+/// A G73 case from A = X50 Z10 (g73.c = visit) over a contour with a rapid, an arc and two
+/// feeds: the contour, A and the words (the cycle-fill tests of `tests::cycle_fill` and `g73`).
+pub fn g73_case() -> (crate::contour::Contour, (i64, i64), crate::g73::Words) {
+    use crate::contour::{Contour, Element, Kind};
+    let mut contour = Contour::new();
+    let e = Element::ZERO;
+    for el in [
+        Element { x: 0, z: 1_000, kind: Kind::Rapid, ..e },
+        Element { x: 12_000, z: -5_000, cx: 0, cz: -5_000, kind: Kind::Arc(false), ..e },
+        Element { x: 12_000, z: -15_000, kind: Kind::Feed, ..e },
+        Element { x: 20_000, z: -30_000, kind: Kind::Feed, ..e },
+    ] {
+        assert!(contour.push(el));
+    }
+    let w = crate::g73::Words { di: 18_000, dk: 5_000, d: 4, allowance: (500, 500), feed: 1_000, count_word: b'R', visit_c: true };
+    (contour, (50_000, 10_000), w)
+}
+
 /// One cycle's own `fill` against its `next_event`, from position `at`, for every buffer size:
 /// the same events, and every call with room writes at least one event until it says done. (The
 /// stream takes a cycle's events one at a time when its `fill` writes none, so a `fill` that

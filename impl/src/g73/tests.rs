@@ -219,22 +219,10 @@ fn any_contour_is_taken() {
 /// iterator alone is called once per event and once more for the end.
 #[test]
 fn fill_builds_the_passes_in_place() {
-    use crate::contour::{Contour, Element, Kind};
     use crate::g73::{Cycle, Words};
     use crate::probe;
     use cycle_vocab::Event;
-    let mut contour = Contour::new();
-    let e = Element::ZERO;
-    for el in [
-        Element { x: 0, z: 1_000, kind: Kind::Rapid, ..e },
-        Element { x: 12_000, z: -5_000, cx: 0, cz: -5_000, kind: Kind::Arc(false), ..e },
-        Element { x: 12_000, z: -15_000, kind: Kind::Feed, ..e },
-        Element { x: 20_000, z: -30_000, kind: Kind::Feed, ..e },
-    ] {
-        assert!(contour.push(el));
-    }
-    let a = (50_000, 10_000);
-    let w = Words { di: 18_000, dk: 5_000, d: 4, allowance: (500, 500), feed: 1_000, count_word: b'R', visit_c: true };
+    let (contour, a, w) = crate::tests::g73_case();
     for (w, calls) in [(w, 3), (Words { visit_c: false, ..w }, 2)] {
         let cycle = Cycle::new(a, &w, &contour, 10_000, 3).unwrap();
         let (mut c, mut pos, before) = (cycle, a, probe::calls());

@@ -5,7 +5,6 @@
 extern crate std;
 
 use crate::batch::Batch;
-use crate::contour::{Contour, Element, Kind};
 use crate::tests::assert_cycle_fill;
 use cycle_vocab::{Event, Move, Rule};
 use std::vec::Vec;
@@ -41,18 +40,7 @@ fn assert_unit<const N: usize, C: Batch<N> + Clone>(cycle: &C, at: (i64, i64)) {
 #[test]
 fn g73() {
     use crate::g73::{Cycle, Words};
-    let mut contour = Contour::new();
-    let e = Element::ZERO;
-    for el in [
-        Element { x: 0, z: 1_000, kind: Kind::Rapid, ..e },
-        Element { x: 12_000, z: -5_000, cx: 0, cz: -5_000, kind: Kind::Arc(false), ..e },
-        Element { x: 12_000, z: -15_000, kind: Kind::Feed, ..e },
-        Element { x: 20_000, z: -30_000, kind: Kind::Feed, ..e },
-    ] {
-        assert!(contour.push(el));
-    }
-    let a = (50_000, 10_000);
-    let w = Words { di: 18_000, dk: 5_000, d: 4, allowance: (500, 500), feed: 1_000, count_word: b'R', visit_c: true };
+    let (contour, a, w) = crate::tests::g73_case();
     for w in [w, Words { visit_c: false, ..w }] {
         let c = Cycle::new(a, &w, &contour, 10_000, 3).unwrap();
         let next = |c: &mut Cycle, p: &mut (i64, i64)| c.next_event(p, &contour);
