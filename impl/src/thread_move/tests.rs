@@ -40,3 +40,23 @@ fn g34_bound() {
     assert!(thread_move(ThreadCode::G34, (0, 0), (0, -1_000), &w(fmax - 200, 0, 1_999_798), G, 4).is_ok());
     assert!(thread_move(ThreadCode::G34, (0, 0), (0, -1_000), &w(fmax - 200, 0, 1_999_799), G, 4).is_err());
 }
+
+/// The bound's sides belong to K's sign (the register: K < 0 bounds L² below by 0, K > 0
+/// above by Fmax²): a lead above Fmax — reachable from I, threads per inch — is no alarm with
+/// K = 0 (the constant form) nor with K < 0 while L² > 0; with K > 0 it is.
+#[test]
+fn g34_bound_sides() {
+    let fmax = max_lead(G.units);
+    let big = fmax + 1;
+    let k0 = thread_move(ThreadCode::G34, (0, 0), (0, -1), &w(big, 0, 0), G, 2).unwrap();
+    assert_eq!(k0, Move::thread(0, -1, big, 0, Rule::G34));
+    let down = thread_move(ThreadCode::G34, (0, 0), (0, -1), &w(big, 0, -1), G, 2).unwrap();
+    assert_eq!(down, Move::variable_thread(0, -1, big, 0, -1, 360_000, 0, Rule::G34));
+    let up = thread_move(ThreadCode::G34, (0, 0), (0, -1), &w(big, 0, 1), G, 2);
+    assert_eq!(up, Err(Alarm::new(AlarmCode::Geometry, Some(b'K'), Rule::G34, 2)));
+    // The smallest lead, 1 count, with no travel: L² = F² = 1 > 0 whatever K's sign.
+    for k in [-1, 0, 1] {
+        let m = thread_move(ThreadCode::G34, (5, 5), (5, 5), &w(1, 0, k), G, 2).unwrap();
+        assert_eq!(m, Move::variable_thread(5, 5, 1, 0, k, 360_000, 0, Rule::G34));
+    }
+}

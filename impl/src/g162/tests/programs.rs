@@ -360,6 +360,10 @@ fn thread_moves() {
         // A face thread is legal; a move to the current position is not emitted.
         ("G32 X10 F1", None),
         ("G34 Z0 F1 K-5", None),
+        // I0.0001 is a lead of 254 000 mm, above Fmax (9 999 mm): bounded only when K > 0.
+        ("G34 W-1 I0.0001 K0", None),
+        ("G34 W-1 I0.0001 K-0.1", None),
+        ("G34 W-1 I0.0001 K0.0001", al(AlarmCode::Geometry, b'K', Rule::G34, 1)),
     ];
     for (src, expect) in cases {
         assert_eq!(alarm_of(src, c), *expect, "{src}");
