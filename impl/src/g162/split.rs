@@ -92,6 +92,8 @@ pub fn first(sp: &SplitParams) -> Step {
 /// Full passes Q, 2Q, …, kQ; then, for D = P − kQ > 0, the targets kQ + D/2, kQ + 3D/4,
 /// kQ + 7D/8 and P, each rounded once half up, a target not deeper than the previous dropped.
 pub fn next(sp: &SplitParams, prev: &Step) -> Option<Step> {
+    #[cfg(test)]
+    crate::probe::count();
     let q = norm(sp);
     let prev_depth = prev.depth.max(0).unsigned_abs();
     if prev_depth >= q.p {

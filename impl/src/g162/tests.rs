@@ -135,3 +135,40 @@ fn at_pass_is_the_state_after_a_pass() {
         }
     }
 }
+
+/// The cycle steps its full passes Q, 2Q, …, kQ itself (`Cycle::next_pass`, no division) and
+/// asks `split::next` only after pass k (k ≥ 1) — for the split passes and the end — so a whole
+/// run calls `next` N − (k − 1) times for N passes (N when k = 0), through `next_event` and
+/// through `fill` alike (`crate::probe` counts the calls on this thread). The positive control:
+/// stepping with `first`/`next` alone calls `next` once per pass.
+#[test]
+fn full_passes_are_stepped_without_split_next() {
+    use crate::probe;
+    use cycle_vocab::Config;
+    for (p, q) in [(2_500, 1_000), (3_000, 1_000), (12, 5), (7, 2), (5, 8), (40, 3)] {
+        let sp = SplitParams { depth: p, allowance: q };
+        let w = Words { x: 1000, z: -5000, incremental: false, h: 100, split: Some(sp), v: 10, taper: 40, a: 300, lead: 15_000, b: 0, i: 0, j: 360_000 };
+        let start = (2000, 0);
+        let c0 = cycle(&Config::default(), &crate::config::DEFAULTS, &w, start, 7).unwrap();
+        let n = u64::try_from(depths(p, q).len()).unwrap();
+        let k = u64::try_from(p / q).unwrap();
+        let want = usize::try_from(n - k.saturating_sub(1)).unwrap();
+        // The positive control: `depths` steps with `next` alone, once per pass.
+        let before = probe::calls();
+        depths(p, q);
+        assert_eq!(probe::calls() - before, usize::try_from(n).unwrap(), "P{p} Q{q}: the control");
+        let (mut c, mut pos, before) = (c0, start, probe::calls());
+        while c.next_event(&mut pos).is_some() {}
+        assert_eq!(probe::calls() - before, want, "P{p} Q{q}: next_event");
+        for size in [1, 6, 7, 64] {
+            let filler = Event::Move(Move::rapid(0, 0, Rule::PrjTrace));
+            let (mut c, mut pos, mut out, before) = (c0, start, std::vec![filler; size], probe::calls());
+            let mut calls = 0;
+            while !c.fill(&mut pos, &mut out).1 {
+                calls += 1;
+                assert!(calls < 1_000, "P{p} Q{q}: fill, buffer of {size}: not done");
+            }
+            assert_eq!(probe::calls() - before, want, "P{p} Q{q}: fill, buffer of {size}");
+        }
+    }
+}
