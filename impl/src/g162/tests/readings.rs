@@ -75,6 +75,11 @@ fn stepped_growing_bound() {
     assert_eq!(alarm_of(&x_long("360"), steps), None);
     // A shrinking pitch is never bounded.
     assert_eq!(alarm_of("G0 X50 Z5\nG162 X44 Z-9000 H600 F9999 I-0.0001 J0.001\n", steps), None);
+    // Nor a constant one (I0, G162.I: only I > 0 is checked), where a growth of one count per
+    // 0.001° would be refused after 0.028 mm: k* = 1, 2·F·J = 199 980 000 < 7.2·10^6·|ΔZ|.
+    let constant = |i: &str| std::format!("G0 X50 Z5\nG162 X44 Z-30 H600 F9999 I{i} J0.001\n");
+    assert_eq!(alarm_of(&constant("0"), steps), None);
+    assert_eq!(alarm_of(&constant("0.0001"), steps), GROWING_I);
 }
 
 /// G162.X: a single pass's X word is the END of segment ②, which starts at X − Wd; the side, the
