@@ -80,6 +80,13 @@ fn stepped_growing_bound() {
     let constant = |i: &str| std::format!("G0 X50 Z5\nG162 X44 Z-30 H600 F9999 I{i} J0.001\n");
     assert_eq!(alarm_of(&constant("0"), steps), None);
     assert_eq!(alarm_of(&constant("0.0001"), steps), GROWING_I);
+    // One step goes beyond Fmax (F1 I9999: k* = 1, no step of I·k*(k* − 1) before it): the
+    // step comes after one revolution, 1 mm of Z (s2 = 20 000 = 2F) — allowed exactly there
+    // (the step falls at the end of ②), refused one increment further and far beyond.
+    let one_step = |z: &str| std::format!("G0 X50 Z5\nG162 X44 Z{z} H600 F1 I9999\n");
+    assert_eq!(alarm_of(&one_step("4"), steps), None);
+    assert_eq!(alarm_of(&one_step("3.999"), steps), GROWING_I);
+    assert_eq!(alarm_of(&one_step("-30"), steps), GROWING_I);
 }
 
 /// G162.X: a single pass's X word is the END of segment ②, which starts at X − Wd; the side, the
