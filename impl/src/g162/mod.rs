@@ -62,12 +62,13 @@ fn sign(v: i128) -> i64 {
 /// The variable lead of segment ② (G162.I, G162.J): (change, angle, floor), all 0 for a
 /// constant lead.
 fn variable_lead(w: &Words) -> (i64, u32, i64) {
-    // A shrinking lead that is already ≤ |I| never changes; I = 0 is a constant lead.
-    if w.i == 0 || (w.i < 0 && w.lead <= w.i.saturating_abs()) {
+    // A shrinking lead that is already ≤ |I| = −I never changes (F ≥ 1, so `F ≤ −I` holds only
+    // for I < 0); I = 0 is a constant lead. The floor is |I| for I < 0, else 0.
+    let minus_i = w.i.saturating_neg();
+    if w.i == 0 || w.lead <= minus_i {
         return (0, 0, 0);
     }
-    let floor = if w.i < 0 { w.i.saturating_abs() } else { 0 };
-    (w.i, w.j, floor)
+    (w.i, w.j, minus_i.max(0))
 }
 
 /// A G162 cycle being expanded: fixed geometry, the current pass and the step within it.
@@ -138,7 +139,7 @@ impl Cycle {
         let d = i128::from(self.pass.depth);
         let t = self.shift(self.pass.depth);
         let s = i128::from(self.s);
-        let bx = i128::from(self.x0) - 2 * s * d;
+        let bx = i128::from(self.x0) - s * (2 * d);
         let ex = bx + i128::from(self.wd);
         let lz = sat(i128::from(self.ze) + t);
         [
@@ -147,7 +148,7 @@ impl Cycle {
             // ② the thread to En.
             (sat(ex), sat(i128::from(self.ze1) + t)),
             // ③ the 45° run-out leg: V outward on X (radius), V toward dz on Z.
-            (sat(ex + 2 * s * i128::from(self.v)), lz),
+            (sat(ex + s * (2 * i128::from(self.v))), lz),
             // ④ retract X to S.x, opposite to the approach.
             (self.start.0, lz),
             // ⑤ return Z to S.
@@ -267,7 +268,7 @@ pub fn cycle(config: &Config, params: &Params, w: &Words, start: (i64, i64), lin
     }
     // 4. The depth-0 path (its leg end) must lie on the approach side of S.
     let si = i128::from(s);
-    let leg_end = x0 + i128::from(w.taper) + 2 * si * i128::from(w.v);
+    let leg_end = x0 + i128::from(w.taper) + si * (2 * i128::from(w.v));
     if si * (sx - leg_end) < 0 {
         return Err(alarm(AlarmCode::Geometry, b'X', Rule::G162Retract));
     }
