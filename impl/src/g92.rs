@@ -3,7 +3,7 @@
 use crate::fixed::{abs_diff, sat};
 use crate::emit::{Cycle, Path, Plan};
 use crate::passes::Cut;
-use crate::pullout::{g92_amounts, offsets, tenths_of_lead, travel, Amounts, Offsets};
+use crate::pullout::{g92_amounts, offsets, tenths_of_lead, travel, Offsets};
 use crate::config::Params;
 use cycle_vocab::{Alarm, AlarmCode, Config, Pass, PassKind, Rule};
 
@@ -48,7 +48,8 @@ pub struct PullMemo {
     /// The inputs the kept values were made from; all 0 (W = 0, which no cycle has: G92.FORMAT
     /// comes first) before the first.
     made_from: PullInputs,
-    amounts: Option<Amounts>,
+    /// G92.PULLOUT: the resolved K is not below the long-axis travel (the cycle's alarm).
+    long_k: bool,
     offsets: Option<Offsets>,
 }
 
@@ -70,16 +71,16 @@ fn jk_word(key: i64) -> Option<i64> {
 }
 
 impl PullMemo {
-    /// G92.JK.1–7 amounts (No.19 of the lead where J or K is omitted, No.5131 for JK.1's J)
-    /// and the G92.PULLOUT offsets for these inputs: the kept ones when the inputs are the last cycle's.
-    /// Inlined: the kept values are read where they are used; a change of inputs is
-    /// [`PullMemo::make`].
+    /// From the G92.JK.1–7 amounts (No.19 of the lead where J or K is omitted, No.5131 for
+    /// JK.1's J): whether K reaches the long-axis travel (G92.PULLOUT's alarm), and the
+    /// G92.PULLOUT offsets — the kept ones when the inputs are the last cycle's. Inlined: the
+    /// kept values are read where they are used; a change of inputs is [`PullMemo::make`].
     #[inline(always)]
-    fn get(&mut self, config: &Config, params: &Params, inputs: PullInputs) -> (Option<Amounts>, Option<Offsets>) {
+    fn get(&mut self, config: &Config, params: &Params, inputs: PullInputs) -> (bool, Option<Offsets>) {
         if self.made_from != inputs {
             self.make(config, params, inputs.lead, inputs.j, inputs.k, inputs.w, inputs.r, inputs.s);
         }
-        (self.amounts, self.offsets)
+        (self.long_k, self.offsets)
     }
 
     /// The amounts and offsets for new inputs, kept. The inputs one by one, so that the caller
@@ -90,8 +91,9 @@ impl PullMemo {
         let inputs = PullInputs { lead, j, k, w, r, s };
         let c = tenths_of_lead(params.no19_pullout, inputs.lead, config.grid);
         let amounts = g92_amounts(jk_word(inputs.j), jk_word(inputs.k), c, params.p5131_chamfer_angle);
+        let long_k = amounts.is_some_and(|am| am.k.unsigned_abs() >= travel(w, r));
         let offsets = amounts.map(|am| offsets(am, inputs.w, inputs.r, inputs.s));
-        *self = PullMemo { made_from: inputs, amounts, offsets };
+        *self = PullMemo { made_from: inputs, long_k, offsets };
     }
 }
 
@@ -140,11 +142,9 @@ pub fn cycle(
     if params.no107_pullout_speed != 0 {
         return Err(alarm(AlarmCode::Unsupported, None, Rule::G92Jk8));
     }
-    let (amounts, pull) = pull.get(config, params, PullInputs { lead, j: st.j, k: st.k, w, r, s });
-    if let Some(am) = amounts {
-        if am.k.unsigned_abs() >= travel(w, r) {
-            return Err(alarm(AlarmCode::Geometry, Some(b'K'), Rule::G92Pullout));
-        }
+    let (long_k, pull) = pull.get(config, params, PullInputs { lead, j: st.j, k: st.k, w, r, s });
+    if long_k {
+        return Err(alarm(AlarmCode::Geometry, Some(b'K'), Rule::G92Pullout));
     }
     // PRJ.MAXPASS: one pass × L starts.
     if st.starts > params.max_passes {

@@ -88,16 +88,25 @@ impl Machine {
         Some(Plain { kind })
     }
 
+    /// Whether `b`, read right after a plain block, is a plain block of the same kind:
+    /// [`Machine::plain`] without the machine's part, which a plain block leaves as it found it
+    /// (a move's handler keeps the mode, G90/G94's and G92's set the one they run under; the
+    /// dialect is the configuration's).
+    #[inline(always)]
+    pub(crate) fn plain_again(b: &Block) -> bool {
+        b.g_codes().is_empty() && b.mask() & !PLAIN == 0
+    }
+
     /// Steps (2) and (3) of a plain block: X with U, Z with W (COM.ABSINC), then U, W, X, Z.
     #[inline(always)]
     fn axes(&mut self, b: &Block) -> Result<Axes, Alarm> {
         // G96.SMAX: no G96 in this block (the interpreter's `g96 && !limited`).
         self.smax_due = false;
         let line = b.line;
-        for (pair, second) in [(const { letter_mask(b"UX") }, b'U'), (const { letter_mask(b"WZ") }, b'W')] {
-            if b.mask() & pair == pair {
-                return Err(Alarm::new(AlarmCode::Conflict, Some(second), Rule::ComAbsInc, line));
-            }
+        let (ux, wz) = (const { letter_mask(b"UX") }, const { letter_mask(b"WZ") });
+        if b.mask() & ux == ux || b.mask() & wz == wz {
+            let second = if b.mask() & ux == ux { b'U' } else { b'W' };
+            return Err(Alarm::new(AlarmCode::Conflict, Some(second), Rule::ComAbsInc, line));
         }
         let grid = self.config.grid;
         let word = |letter: u8| match b.get(letter) {

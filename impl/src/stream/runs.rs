@@ -11,7 +11,7 @@
 use super::Core;
 use crate::emit::{emit, START_EVENTS};
 use crate::g90::{CutCode, CUT_EVENTS};
-use crate::modal::Plain;
+use crate::modal::{Machine, Plain};
 use crate::run::Run;
 use cycle_vocab::{Alarm, Event};
 
@@ -38,7 +38,8 @@ impl Core<'_> {
             if let Err(r) = self.advance(out.len() > n) {
                 return (n, Some(r));
             }
-            if self.machine.plain(&self.block).and_then(Plain::cut) != Some(code) {
+            // `plain_cut` set the mode `code` (`Machine::plain_again`).
+            if !Machine::plain_again(&self.block) {
                 return (n, None);
             }
         }
@@ -63,7 +64,8 @@ impl Core<'_> {
             if let Err(r) = self.advance(out.len() > n) {
                 return (n, Some(r));
             }
-            if !self.machine.plain(&self.block).is_some_and(Plain::is_g92) {
+            // `plain_g92` set the G92 mode (`Machine::plain_again`).
+            if !Machine::plain_again(&self.block) {
                 return (n, None);
             }
         }
@@ -87,7 +89,8 @@ impl Core<'_> {
             if let Err(r) = self.advance(out.len() > n) {
                 return (n, Some(r));
             }
-            if self.machine.plain(&self.block) != Some(plain) {
+            // A plain move leaves the mode as it found it (`Machine::plain_again`).
+            if !Machine::plain_again(&self.block) {
                 return (n, None);
             }
         }
