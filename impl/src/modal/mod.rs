@@ -310,6 +310,7 @@ impl Machine {
 
     /// COM.ABSINC: the end point from X(U), Z(W): U and W are added to the position `from`; an
     /// omitted axis takes `kept`.
+    #[inline(always)]
     fn end_point(v: &Vals, from: (i64, i64), kept: (i64, i64)) -> (i64, i64) {
         let x = match (v.x, v.u) {
             (Some(x), _) => x,
@@ -326,9 +327,10 @@ impl Machine {
 
     /// `from + d`, saturated as the exact sum ([`Machine::end_point`]'s U and W); out of line,
     /// so that a block without U or W does not compute it.
+    #[cold]
     #[inline(never)]
     fn moved(from: i64, d: i64) -> i64 {
-        sat(i128::from(from) + i128::from(d))
+        from.saturating_add(d)
     }
 
     /// NC201.ABSINC: the end point of a G00/G01 block under nc201 — X (a diameter count,
