@@ -184,7 +184,7 @@ impl Machine {
         // and result, without the steps that cannot apply to it (`plain`).
         if let Some(plain) = self.plain(b) {
             if plain.is_move() {
-                *run = self.plain_move(plain, b)?.map_or(Run::Idle, Run::Move);
+                *run = self.plain_move(plain, b, self.config.grid.decimals())?.map_or(Run::Idle, Run::Move);
             } else {
                 self.plain_cycle(plain, b, run)?;
             }

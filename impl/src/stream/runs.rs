@@ -23,8 +23,9 @@ impl Core<'_> {
     /// not fit is left in `run` and ends the call ([`Core::fill`] runs it next).
     #[inline(never)]
     pub(super) fn cut_run(&mut self, code: CutCode, out: &mut [Event], mut n: usize) -> RunEnd {
+        let places = self.machine.config.grid.decimals();
         loop {
-            match self.machine.plain_cut(code, &self.block) {
+            match self.machine.plain_cut(code, &self.block, places) {
                 Ok(Some(cycle)) => match out.get_mut(n..).and_then(|r| r.first_chunk_mut::<CUT_EVENTS>()) {
                     Some(slots) => n += cycle.write_new(&mut self.machine.pos, slots),
                     None => {
@@ -49,8 +50,9 @@ impl Core<'_> {
     /// room, left in `run`, ending the call.
     #[inline(never)]
     pub(super) fn g92_run(&mut self, out: &mut [Event], mut n: usize) -> RunEnd {
+        let places = self.machine.config.grid.decimals();
         loop {
-            match self.machine.plain_g92(&self.block) {
+            match self.machine.plain_g92(&self.block, places) {
                 Ok(Some(cycle)) => match out.get_mut(n..).and_then(|r| r.first_chunk_mut::<START_EVENTS>()) {
                     Some(slots) if cycle.is_single() => n += cycle.write_new(&mut self.machine.pos, slots),
                     _ => {
@@ -75,8 +77,9 @@ impl Core<'_> {
     /// slot (none for a move to where the machine stands, PRJ.NOOP).
     #[inline(never)]
     pub(super) fn move_run(&mut self, plain: Plain, out: &mut [Event], mut n: usize) -> RunEnd {
+        let places = self.machine.config.grid.decimals();
         loop {
-            match self.machine.plain_move(plain, &self.block) {
+            match self.machine.plain_move(plain, &self.block, places) {
                 Ok(Some(m)) => {
                     if let (Some(e), Some(slot)) = (emit(m, &mut self.machine.pos), out.get_mut(n)) {
                         *slot = e;
