@@ -195,3 +195,6 @@ fn wide_side(ax: i64, dx: i64, r: i64) -> (i64, i64) {
 fn sat_sub(a: i64, b: i64) -> i64 {
     a.saturating_sub(b)
 }
+
+#[cfg(test)]
+mod tests;
