@@ -23,6 +23,8 @@ impl Core<'_> {
     /// not fit is left in `run` and ends the call ([`Core::fill`] runs it next).
     #[inline(never)]
     pub(super) fn cut_run(&mut self, code: CutCode, out: &mut [Event], mut n: usize) -> RunEnd {
+        #[cfg(test)]
+        crate::probe::count_run();
         let places = self.machine.config.grid.decimals();
         loop {
             match self.machine.plain_cut(code, &self.block, places) {
@@ -50,6 +52,8 @@ impl Core<'_> {
     /// room, left in `run`, ending the call.
     #[inline(never)]
     pub(super) fn g92_run(&mut self, out: &mut [Event], mut n: usize) -> RunEnd {
+        #[cfg(test)]
+        crate::probe::count_run();
         let places = self.machine.config.grid.decimals();
         loop {
             match self.machine.plain_g92(&self.block, places) {
@@ -77,6 +81,8 @@ impl Core<'_> {
     /// slot (none for a move to where the machine stands, PRJ.NOOP).
     #[inline(never)]
     pub(super) fn move_run(&mut self, plain: Plain, out: &mut [Event], mut n: usize) -> RunEnd {
+        #[cfg(test)]
+        crate::probe::count_run();
         let places = self.machine.config.grid.decimals();
         loop {
             match self.machine.plain_move(plain, &self.block, places) {
@@ -99,3 +105,6 @@ impl Core<'_> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests;
