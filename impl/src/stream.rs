@@ -229,6 +229,8 @@ impl Core<'_> {
             self.done = true;
             return Ok(false);
         }
+        #[cfg(test)]
+        crate::probe::count_read();
         if !self.blocks.read(&mut self.block)? {
             // SUB.RETURN: the text ends inside a subprogram.
             self.calls.end_of_text()?;

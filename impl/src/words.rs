@@ -57,7 +57,18 @@ pub fn length_in(n: Number, grid: Grid, increments: bool, lo: i64, hi: i64, at: 
 
 /// COM.RANGES: a signed length |v| ≤ N (X, U, Z, W, R).
 pub fn signed_length(n: Number, grid: Grid, at: At) -> Result<i64, Alarm> {
-    length_in(n, grid, false, -MAX_LENGTH, MAX_LENGTH, at)
+    signed_length_places(n, grid.decimals(), at)
+}
+
+/// [`signed_length`] with the grid's decimal places given (`grid.decimals()`, as [`length`]
+/// takes them), for a caller that reads many blocks on one grid.
+#[inline(always)]
+pub fn signed_length_places(n: Number, places: u32, at: At) -> Result<i64, Alarm> {
+    let v = n.scaled(places).map_err(|e| scale_error(e, at, Rule::ComRanges))?;
+    if !(-MAX_LENGTH..=MAX_LENGTH).contains(&v) {
+        return Err(at.out_of_range());
+    }
+    Ok(v)
 }
 
 /// COM.RANGES: an integer word (P of the first block, L, D) written without a decimal point

@@ -43,11 +43,11 @@ impl Machine {
         if let Some(r) = v.r {
             st.r = r;
         }
-        if v.j.is_some() {
-            st.j = v.j;
+        if let Some(j) = v.j {
+            st.j = j;
         }
-        if v.k.is_some() {
-            st.k = v.k;
+        if let Some(k) = v.k {
+            st.k = k;
         }
         if let Some(l) = v.l {
             st.starts = u32::try_from(l).unwrap_or(1);

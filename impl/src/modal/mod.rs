@@ -184,7 +184,7 @@ impl Machine {
         // and result, without the steps that cannot apply to it (`plain`).
         if let Some(plain) = self.plain(b) {
             if plain.is_move() {
-                *run = self.plain_move(plain, b)?.map_or(Run::Idle, Run::Move);
+                *run = self.plain_move(plain, b, self.config.grid.decimals())?.map_or(Run::Idle, Run::Move);
             } else {
                 self.plain_cycle(plain, b, run)?;
             }
@@ -310,18 +310,27 @@ impl Machine {
 
     /// COM.ABSINC: the end point from X(U), Z(W): U and W are added to the position `from`; an
     /// omitted axis takes `kept`.
+    #[inline(always)]
     fn end_point(v: &Vals, from: (i64, i64), kept: (i64, i64)) -> (i64, i64) {
         let x = match (v.x, v.u) {
             (Some(x), _) => x,
-            (None, Some(u)) => sat(i128::from(from.0) + i128::from(u)),
+            (None, Some(u)) => Self::moved(from.0, u),
             (None, None) => kept.0,
         };
         let z = match (v.z, v.w) {
             (Some(z), _) => z,
-            (None, Some(w)) => sat(i128::from(from.1) + i128::from(w)),
+            (None, Some(w)) => Self::moved(from.1, w),
             (None, None) => kept.1,
         };
         (x, z)
+    }
+
+    /// `from + d`, saturated as the exact sum ([`Machine::end_point`]'s U and W); out of line,
+    /// so that a block without U or W does not compute it.
+    #[cold]
+    #[inline(never)]
+    fn moved(from: i64, d: i64) -> i64 {
+        from.saturating_add(d)
     }
 
     /// NC201.ABSINC: the end point of a G00/G01 block under nc201 — X (a diameter count,

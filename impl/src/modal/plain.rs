@@ -18,7 +18,7 @@ use crate::emit;
 use crate::g90::{self, CutCode};
 use crate::lex::{letter_mask, Block};
 use crate::run::Run;
-use crate::words::{signed_length, At};
+use crate::words::{signed_length_places, At};
 use cycle_vocab::{Alarm, AlarmCode, Dialect, Move, Rule};
 
 /// The words a plain block may have.
@@ -88,20 +88,28 @@ impl Machine {
         Some(Plain { kind })
     }
 
+    /// Whether `b`, read right after a plain block, is a plain block of the same kind:
+    /// [`Machine::plain`] without the machine's part, which a plain block leaves as it found it
+    /// (a move's handler keeps the mode, G90/G94's and G92's set the one they run under; the
+    /// dialect is the configuration's).
+    #[inline(always)]
+    pub(crate) fn plain_again(b: &Block) -> bool {
+        b.g_codes().is_empty() && b.mask() & !PLAIN == 0
+    }
+
     /// Steps (2) and (3) of a plain block: X with U, Z with W (COM.ABSINC), then U, W, X, Z.
     #[inline(always)]
-    fn axes(&mut self, b: &Block) -> Result<Axes, Alarm> {
+    fn axes(&mut self, b: &Block, places: u32) -> Result<Axes, Alarm> {
         // G96.SMAX: no G96 in this block (the interpreter's `g96 && !limited`).
         self.smax_due = false;
         let line = b.line;
-        for (pair, second) in [(const { letter_mask(b"UX") }, b'U'), (const { letter_mask(b"WZ") }, b'W')] {
-            if b.mask() & pair == pair {
-                return Err(Alarm::new(AlarmCode::Conflict, Some(second), Rule::ComAbsInc, line));
-            }
+        let (ux, wz) = (const { letter_mask(b"UX") }, const { letter_mask(b"WZ") });
+        if b.mask() & ux == ux || b.mask() & wz == wz {
+            let second = if b.mask() & ux == ux { b'U' } else { b'W' };
+            return Err(Alarm::new(AlarmCode::Conflict, Some(second), Rule::ComAbsInc, line));
         }
-        let grid = self.config.grid;
         let word = |letter: u8| match b.get(letter) {
-            Some(n) => signed_length(n, grid, At { letter, line }).map(Some),
+            Some(n) => signed_length_places(n, places, At { letter, line }).map(Some),
             None => Ok(None),
         };
         Ok(Axes { u: word(b'U')?, w: word(b'W')?, x: word(b'X')?, z: word(b'Z')? })
@@ -110,9 +118,9 @@ impl Machine {
     /// A plain block that gives a move ([`Plain::is_move`]): its move, if any, with every check
     /// of the general path (the mode's handler, then G96.RAPID under G00).
     #[inline(always)]
-    pub(crate) fn plain_move(&mut self, plain: Plain, b: &Block) -> Result<Option<Move>, Alarm> {
+    pub(crate) fn plain_move(&mut self, plain: Plain, b: &Block, places: u32) -> Result<Option<Move>, Alarm> {
         let kind = plain.kind;
-        let a = self.axes(b)?;
+        let a = self.axes(b, places)?;
         let axis = a.any();
         let v = Vals { u: a.u, w: a.w, x: a.x, z: a.z, ..Vals::default() };
         let line = b.line;
@@ -131,8 +139,8 @@ impl Machine {
     /// A plain block of the G90/G94 mode `code` ([`Plain::cut`]): its cycle, returned (none
     /// without axis words) for the caller to build where it keeps it; inlined for that.
     #[inline(always)]
-    pub(crate) fn plain_cut(&mut self, code: CutCode, b: &Block) -> Result<Option<g90::Cycle>, Alarm> {
-        let a = self.axes(b)?;
+    pub(crate) fn plain_cut(&mut self, code: CutCode, b: &Block, places: u32) -> Result<Option<g90::Cycle>, Alarm> {
+        let a = self.axes(b, places)?;
         let axis = a.any();
         let v = Vals { u: a.u, w: a.w, x: a.x, z: a.z, ..Vals::default() };
         self.cut_cycle(code, false, &v, axis, b.line)
@@ -141,8 +149,8 @@ impl Machine {
     /// A plain block of the G92 mode ([`Plain::is_g92`]): its cycle, returned (none without
     /// axis words) for the caller to build where it keeps it; inlined for that.
     #[inline(always)]
-    pub(crate) fn plain_g92(&mut self, b: &Block) -> Result<Option<emit::Cycle>, Alarm> {
-        let a = self.axes(b)?;
+    pub(crate) fn plain_g92(&mut self, b: &Block, places: u32) -> Result<Option<emit::Cycle>, Alarm> {
+        let a = self.axes(b, places)?;
         let axis = a.any();
         let v = Vals { u: a.u, w: a.w, x: a.x, z: a.z, ..Vals::default() };
         self.g92_cycle(false, &v, axis, b.line)
@@ -153,7 +161,7 @@ impl Machine {
     pub(crate) fn plain_cycle(&mut self, plain: Plain, b: &Block, run: &mut Run) -> Result<(), Alarm> {
         let kind = plain.kind;
         *run = Run::Idle;
-        let a = self.axes(b)?;
+        let a = self.axes(b, self.config.grid.decimals())?;
         let axis = a.any();
         let v = Vals { u: a.u, w: a.w, x: a.x, z: a.z, ..Vals::default() };
         match kind {

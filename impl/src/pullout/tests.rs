@@ -33,6 +33,21 @@ fn multi_table() {
     assert_eq!(multi_amounts(None, Some(0), 100, 45), None);
 }
 
+/// "A resolved amount of 0 means no pull-out" (docs/INTERPRETATION.md, G92.JK.*; "A resolved J
+/// or K of 0: no pull-out", G76.PULLOUT): a J that resolves to 0 while K does not. G92.JK.2
+/// with No.19 = 0 (J = c = 0); JK.1 and G76/G78's J = round(K·tan 5131°) with K = 1 increment
+/// and 5131 = 1° (tan 1° ≈ 0.017: J rounds to 0).
+#[test]
+fn a_resolved_j_of_0_is_no_pull_out() {
+    assert_eq!(g92_amounts(None, Some(5), 0, 45), None);
+    assert_eq!(g92_amounts(None, None, 1, 1), None);
+    assert_eq!(multi_amounts(None, Some(1), 100, 1), None);
+    assert_eq!(multi_amounts(None, None, 1, 1), None);
+    // The same amounts with a J of 1 make a pull-out.
+    assert_eq!(g92_amounts(None, Some(5), 1, 45), Some(Amounts { j: 1, k: 5 }));
+    assert_eq!(multi_amounts(None, Some(100), 0, 1), Some(Amounts { j: 2, k: 100 }));
+}
+
 #[test]
 fn chamfer_widths() {
     // r = 10 tenths of a 4 mm lead = 4 mm; No.19 = 10 of 3 mm = 3 mm (ISB: 10 counts/inc).

@@ -11,7 +11,7 @@
 use super::Core;
 use crate::emit::{emit, START_EVENTS};
 use crate::g90::{CutCode, CUT_EVENTS};
-use crate::modal::Plain;
+use crate::modal::{Machine, Plain};
 use crate::run::Run;
 use cycle_vocab::{Alarm, Event};
 
@@ -23,8 +23,11 @@ impl Core<'_> {
     /// not fit is left in `run` and ends the call ([`Core::fill`] runs it next).
     #[inline(never)]
     pub(super) fn cut_run(&mut self, code: CutCode, out: &mut [Event], mut n: usize) -> RunEnd {
+        #[cfg(test)]
+        crate::probe::count_run();
+        let places = self.machine.config.grid.decimals();
         loop {
-            match self.machine.plain_cut(code, &self.block) {
+            match self.machine.plain_cut(code, &self.block, places) {
                 Ok(Some(cycle)) => match out.get_mut(n..).and_then(|r| r.first_chunk_mut::<CUT_EVENTS>()) {
                     Some(slots) => n += cycle.write_new(&mut self.machine.pos, slots),
                     None => {
@@ -38,7 +41,8 @@ impl Core<'_> {
             if let Err(r) = self.advance(out.len() > n) {
                 return (n, Some(r));
             }
-            if self.machine.plain(&self.block).and_then(Plain::cut) != Some(code) {
+            // `plain_cut` set the mode `code` (`Machine::plain_again`).
+            if !Machine::plain_again(&self.block) {
                 return (n, None);
             }
         }
@@ -48,8 +52,11 @@ impl Core<'_> {
     /// room, left in `run`, ending the call.
     #[inline(never)]
     pub(super) fn g92_run(&mut self, out: &mut [Event], mut n: usize) -> RunEnd {
+        #[cfg(test)]
+        crate::probe::count_run();
+        let places = self.machine.config.grid.decimals();
         loop {
-            match self.machine.plain_g92(&self.block) {
+            match self.machine.plain_g92(&self.block, places) {
                 Ok(Some(cycle)) => match out.get_mut(n..).and_then(|r| r.first_chunk_mut::<START_EVENTS>()) {
                     Some(slots) if cycle.is_single() => n += cycle.write_new(&mut self.machine.pos, slots),
                     _ => {
@@ -63,7 +70,8 @@ impl Core<'_> {
             if let Err(r) = self.advance(out.len() > n) {
                 return (n, Some(r));
             }
-            if !self.machine.plain(&self.block).is_some_and(Plain::is_g92) {
+            // `plain_g92` set the G92 mode (`Machine::plain_again`).
+            if !Machine::plain_again(&self.block) {
                 return (n, None);
             }
         }
@@ -73,8 +81,11 @@ impl Core<'_> {
     /// slot (none for a move to where the machine stands, PRJ.NOOP).
     #[inline(never)]
     pub(super) fn move_run(&mut self, plain: Plain, out: &mut [Event], mut n: usize) -> RunEnd {
+        #[cfg(test)]
+        crate::probe::count_run();
+        let places = self.machine.config.grid.decimals();
         loop {
-            match self.machine.plain_move(plain, &self.block) {
+            match self.machine.plain_move(plain, &self.block, places) {
                 Ok(Some(m)) => {
                     if let (Some(e), Some(slot)) = (emit(m, &mut self.machine.pos), out.get_mut(n)) {
                         *slot = e;
@@ -87,9 +98,13 @@ impl Core<'_> {
             if let Err(r) = self.advance(out.len() > n) {
                 return (n, Some(r));
             }
-            if self.machine.plain(&self.block) != Some(plain) {
+            // A plain move leaves the mode as it found it (`Machine::plain_again`).
+            if !Machine::plain_again(&self.block) {
                 return (n, None);
             }
         }
     }
 }
+
+#[cfg(test)]
+mod tests;
