@@ -122,10 +122,10 @@ pub fn cycle(
         return Err(alarm(AlarmCode::Geometry, Some(b'Z'), Rule::G92Format));
     }
     // G92.TAPER: U = D.x − A.x (diameter); R and U of different signs need 2|R| ≤ |U| (exact,
-    // in i128; only a taper has R ≠ 0).
+    // in i128; only a taper has R ≠ 0). U = 0 has no sign: sign(R)·sign(U) is then 0.
     if r != 0 {
         let u = i128::from(d.0) - i128::from(a.0);
-        if u != 0 && (r < 0) != (u < 0) && 2 * i128::from(r).abs() > u.abs() {
+        if i128::from(r.signum()) * u.signum() < 0 && 2 * i128::from(r).abs() > u.abs() {
             return Err(alarm(AlarmCode::Geometry, Some(b'R'), Rule::G92Taper));
         }
     }
@@ -155,11 +155,11 @@ pub fn cycle(
     // when the pull-out's short-axis move carries X there, else on X.
     // s·(A.x − x) < 0 with s = ±1, as a comparison (no product). X₃ = D.x + the pull-out's X;
     // where that leaves i64, X₃ lies past every i64 on the side of the pull-out's sign.
-    let beyond = |x: i64| if s > 0 { a.0 < x } else { a.0 > x };
+    let beyond = |x: i64| if s == 1 { a.0 < x } else { a.0 > x };
     let e = pull.map_or(0, |o| o.end.0);
     let past = match d.0.checked_add(e) {
         Some(x3) => beyond(x3),
-        None => (s > 0) == (e > 0),
+        None => (s == 1) == (e > 0),
     };
     if past {
         let word = if beyond(d.0) { b'X' } else { b'J' };

@@ -101,10 +101,10 @@ pub fn offsets(a: Amounts, w: i64, r: i64, s: i64) -> Offsets {
     let (w, r) = (i128::from(w), i128::from(r));
     if z_long(sat(w), sat(r)) {
         let dx = div_round_signed(r * k, w.abs()); // radius
-        Offsets { start: (sat(2 * dx), sat(-sz * k)), end: (sat(2 * i128::from(s) * j), 0) }
+        Offsets { start: (sat(2 * dx), sat(-sz * k)), end: (sat(i128::from(s) * (2 * j)), 0) }
     } else {
         let dz = div_round_signed(w.abs() * k, r.abs());
-        Offsets { start: (sat(2 * i128::from(sign(sat(r))) * k), sat(-sz * dz)), end: (0, sat(-sz * j)) }
+        Offsets { start: (sat(i128::from(sign(sat(r))) * (2 * k)), sat(-sz * dz)), end: (0, sat(-sz * j)) }
     }
 }
 

@@ -159,6 +159,14 @@ fn tapers() {
     assert_eq!(t.alarm, alarm(AlarmCode::Geometry, Some(b'X'), Rule::ComSide, 2));
     let t = expand("G0 X50 Z5\nG92 X40 Z-30 R4 F2 J0\n", Config::default());
     assert_eq!(t.alarm, None);
+    // U = 0 (D.x = A.x) has no sign, so any R is allowed; J0: ③ starts at A.x (G92.PATH).
+    // R−3: C.x = 50 − 6 = 44, s = +1; R3: C.x = 56, s = −1.
+    for (r, cx) in [("R-3", 44_000), ("R3", 56_000)] {
+        let t = expand(&std::format!("G0 X50 Z5\nG92 X50 Z-30 {r} F2 J0\n"), Config::default());
+        assert_eq!(t.alarm, None, "{r}");
+        assert_eq!(moves(&t)[1], Move::rapid(cx, 5_000, Rule::G92Path), "{r}");
+        assert_eq!(threads(&t), [(50_000, -30_000)], "{r}");
+    }
     // X long: R = 10 (radius) over W = −4; J1 K2: the pull-out starts at X = D.x + 2·10/…
     // sign(R)·K = +2 radius and Z = D.z + round(4·2/10) = −3.2; it ends at D.x, Z = D.z + 1.
     let t = expand("G0 X100 Z0\nG92 X50 Z-4 R10 F2 J1 K2\n", Config::default());
