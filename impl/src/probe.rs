@@ -1,12 +1,14 @@
-//! Test only: the calls of a contour cycle's `next_event` (G70's `finish::Cycle`, G73's
-//! `g73::Cycle`) on this thread, so that a test sees which events `fill` builds in place and
-//! which it takes from `next_event` (issue #33: the two paths give the same events, so no trace
-//! tells them apart). A test reads the count before and after the cycle it runs.
+//! Test only: counts on this thread of calls that a fast path avoids, so that a test sees which
+//! path ran where both give the same events (issue #33: no trace tells them apart) — a contour
+//! cycle's `next_event` (G70's `finish::Cycle`, G73's `g73::Cycle`: the events `fill` builds in
+//! place), and G71/G72's layer cuts computed afresh (`rough`'s `new_layer_cut`: a line's cut is
+//! otherwise stepped from the layer before). A test reads a count before and after its run.
 extern crate std;
 use core::cell::Cell;
 
 std::thread_local! {
     static CALLS: Cell<usize> = const { Cell::new(0) };
+    static CUTS: Cell<usize> = const { Cell::new(0) };
 }
 
 /// One call of a `next_event` that counts itself.
@@ -17,4 +19,14 @@ pub fn count() {
 /// The calls counted on this thread so far.
 pub fn calls() -> usize {
     CALLS.with(Cell::get)
+}
+
+/// One G71/G72 layer cut computed afresh (not stepped from the layer before).
+pub fn count_cut() {
+    CUTS.with(|c| c.set(c.get() + 1));
+}
+
+/// The fresh layer cuts counted on this thread so far.
+pub fn cuts() -> usize {
+    CUTS.with(Cell::get)
 }
