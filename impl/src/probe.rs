@@ -1,8 +1,9 @@
 //! Test only: counts on this thread of calls that a fast path avoids, so that a test sees which
 //! path ran where both give the same events (issue #33: no trace tells them apart) — a contour
-//! cycle's `next_event` (G70's `finish::Cycle`, G73's `g73::Cycle`: the events `fill` builds in
-//! place), and G71/G72's layer cuts computed afresh (`rough`'s `new_layer_cut`: a line's cut is
-//! otherwise stepped from the layer before). A test reads a count before and after its run.
+//! cycle's `next_event` (G70's `finish::Cycle`, G73's `g73::Cycle`, G71/G72's
+//! `rough::Roughing`: the events `fill` builds in place), and G71/G72's layer cuts computed
+//! afresh (`rough`'s `new_layer_cut`: a line's cut is otherwise stepped from the layer before).
+//! A test reads a count before and after its run.
 extern crate std;
 use core::cell::Cell;
 

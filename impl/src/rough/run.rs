@@ -15,6 +15,8 @@ impl Roughing {
     /// work: a header is emitted at least every five steps, and the sweep's cursor moves at most
     /// n − 1 times over the whole cycle.
     pub fn next_event(&mut self, pos: &mut (i64, i64), contour: &Contour) -> Option<Event> {
+        #[cfg(test)]
+        crate::probe::count();
         loop {
             let ev = match self.phase {
                 Phase::Layer => self.layer_step(contour),

@@ -14,6 +14,7 @@ use std::string::String;
 use std::vec::Vec;
 
 mod checks;
+mod fill;
 mod layers;
 mod stepping;
 
