@@ -3,6 +3,8 @@ use super::*;
 use crate::tests::xorshift;
 use std::vec::Vec;
 
+mod parts;
+
 fn first(p: &ScheduleParams) -> Rough {
     Schedule::new(p).first()
 }
