@@ -265,6 +265,8 @@ fn switch_pass(dd: u64, dmin: u64) -> u64 {
 /// The least n in 1..=2^32 with a² < c²·(n − 1), by binary search ([`switch_test`] is monotone
 /// in n); [`NEVER`] when there is none (no pass number gets there).
 fn switch_search(a: u128, c: u128) -> u64 {
+    #[cfg(test)]
+    crate::probe::count_search();
     let holds = |n: u64| switch_test(a, c, n - 1);
     let cap = 1u64 << 32;
     if !holds(cap) {

@@ -260,6 +260,8 @@ impl Roughing {
     /// line the stepping state set up for the next layers.
     #[inline(never)]
     fn new_layer_cut(&mut self, contour: &Contour) -> i64 {
+        #[cfg(test)]
+        crate::probe::count_cut();
         let (j, k) = (self.cursor, self.k);
         self.line_j = usize::MAX;
         if j + 1 < self.n && !matches!(contour.get(j + 1).kind, Kind::Arc(_)) {

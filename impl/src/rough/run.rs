@@ -15,6 +15,8 @@ impl Roughing {
     /// work: a header is emitted at least every five steps, and the sweep's cursor moves at most
     /// n − 1 times over the whole cycle.
     pub fn next_event(&mut self, pos: &mut (i64, i64), contour: &Contour) -> Option<Event> {
+        #[cfg(test)]
+        crate::probe::count();
         loop {
             let ev = match self.phase {
                 Phase::Layer => self.layer_step(contour),
@@ -42,18 +44,14 @@ impl Roughing {
     /// it is kept, else one event at a time. Returns how many were written and whether the
     /// cycle is done.
     pub fn fill(&mut self, pos: &mut (i64, i64), out: &mut [Event], contour: &Contour) -> (usize, bool) {
-        // The whole layers first, one loop per axis (the axis then a constant in each).
-        let mut n = match self.axis {
-            Axis::G71 => self.write_layers(Axis::G71, pos, out, contour),
-            Axis::G72 => self.write_layers(Axis::G72, pos, out, contour),
-        };
+        let mut n = 0;
         loop {
-            if self.phase == Phase::Layer && self.step_no == 0 {
-                if let Some(slots) = out.get_mut(n..).and_then(|r| r.first_chunk_mut::<LAYER_EVENTS>()) {
-                    n += self.write_layer(pos, slots, contour);
-                    continue;
-                }
-            }
+            // The whole layers that fit, one loop per axis (the axis then a constant in each).
+            let rest = out.get_mut(n..).unwrap_or_default();
+            n += match self.axis {
+                Axis::G71 => self.write_layers(Axis::G71, pos, rest, contour),
+                Axis::G72 => self.write_layers(Axis::G72, pos, rest, contour),
+            };
             let Some(slot) = out.get_mut(n) else {
                 return (n, false);
             };

@@ -14,7 +14,9 @@ use std::string::String;
 use std::vec::Vec;
 
 mod checks;
+mod fill;
 mod layers;
+mod stepping;
 
 pub const EXAMPLE_1: &str = "N010 G50 X150 Z100\nN020 G00 X41 Z0\nN030 G71 U2 R1\nN040 G71 P50 Q120 U0.5 W0.2 F100\n\
 N050 G01 X0 Z0\nN060 G03 X11 W-5.5 R5.5\nN070 G01 W-10\nN080 X17 W-10\nN090 W-15\nN100 G02 X29 W-7.348 R7.5\n\

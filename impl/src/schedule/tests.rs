@@ -3,6 +3,9 @@ use super::*;
 use crate::tests::xorshift;
 use std::vec::Vec;
 
+mod parts;
+mod search;
+
 fn first(p: &ScheduleParams) -> Rough {
     Schedule::new(p).first()
 }

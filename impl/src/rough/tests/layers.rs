@@ -277,3 +277,17 @@ fn cut_ends_round_once_half_away_from_zero() {
     }
     assert!(checked > 90_000);
 }
+
+/// G71.LAYER when layer 1 stands exactly on a point of Q that ends an arc: the cut ends where Q
+/// leaves the layer — that point itself, X39 Z−0.001 (Q = the contour shifted by W5), one
+/// increment beyond A.z, so the layer exists (c·(z₁ − A.z) > 0). The arc N55 (centre X39 Z0
+/// before the shift, radius 5 from its start) ends 0.001 off its circle (within ARC.TOL's 0.010):
+/// its circle meets X39 at Z0 after the shift, which is no cut; the layer's cut is the point, not
+/// the circle's value there. Layer 2 (X37) meets the arc at Z+0.101, behind A.z: K = 1.
+#[test]
+fn a_layer_on_an_arcs_end_cuts_to_that_end() {
+    let src = "G0 X41 Z0\nG71 U1 R0.5\nG71 P50 Q60 W5 F0.2\nN50 G1 X29\nN55 G2 X39 Z-5.001 I5 K0\nN60 G1 X41 Z-20\n";
+    let t = expand(src, Config::default());
+    assert_eq!(t.alarm, None);
+    assert_eq!(layer_cuts(&t.events), [(1, (39_000, -1))]);
+}
