@@ -5,7 +5,9 @@
 //! - the calls of G162's `split::next`, which the cycle's own step of a full pass does not make;
 //! - G71/G72's layer cuts computed afresh (`rough`'s `new_layer_cut`: a line's cut is otherwise
 //!   stepped from the layer before);
-//! - G76.DEPTH.MIN's switch pass searched (`schedule`'s `switch_search`, not the closed form);
+//! - G76.DEPTH.MIN's switch pass searched (`schedule`'s `switch_search`, not the closed form),
+//!   and G76.DEPTH.1's square roots taken (`schedule`'s `root`, where its walk from the guess
+//!   does not find the root);
 //! - the plain-block loops entered (`stream::runs`) and the blocks read (`Core::lex`): that a
 //!   run of plain blocks is read in one loop, and no block before the buffer has room.
 extern crate std;
@@ -31,5 +33,6 @@ macro_rules! counter {
 counter!(CALLS, count, calls, "calls of a `next_event` that counts itself");
 counter!(CUTS, count_cut, cuts, "G71/G72 layer cuts computed afresh");
 counter!(SEARCHES, count_search, searches, "G76.DEPTH.MIN switch-pass searches");
+counter!(ROOTS, count_root, roots, "G76.DEPTH.1 square roots taken");
 counter!(RUNS, count_run, runs, "plain-block loops entered");
 counter!(READS, count_read, reads, "blocks read");

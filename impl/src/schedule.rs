@@ -324,6 +324,8 @@ fn root(v: u128, hint: u64) -> u64 {
         }
     }
     // v < 2^128: the root is at most 2^64 − 1 (rounded half up, still below 2^64 + 1).
+    #[cfg(test)]
+    crate::probe::count_root();
     u64::try_from(sqrt_round(v)).unwrap_or(u64::MAX)
 }
 

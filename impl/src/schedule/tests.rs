@@ -4,6 +4,7 @@ use crate::tests::xorshift;
 use std::vec::Vec;
 
 mod parts;
+mod root;
 mod search;
 
 fn first(p: &ScheduleParams) -> Rough {
