@@ -55,6 +55,22 @@ fn manual_pitch_example() {
     assert_eq!(long_axis_pitch(3, 4, 3), 2);
 }
 
+/// G162.F at the top of the ranges: F = 99 990 000 lead counts (the F maximum, COM.LEAD) along
+/// a 45° cone whose long and short lengths are both N = 99 999 999: F·l/√(2l²) = 99 990 000/√2
+/// = 70 703 607.05…, rounded once, half up: 70 703 607 — exact on the largest inputs.
+#[test]
+fn manual_pitch_at_the_top_of_the_ranges() {
+    assert_eq!(long_axis_pitch(99_990_000, 99_999_999, 99_999_999), 70_703_607);
+}
+
+/// G162.F below half a count: 1 count along a cone of long length 1 and short length 3 is
+/// 1/√10 = 0.316… counts, rounded once, half up: 0; 2/√10 = 0.632…: 1.
+#[test]
+fn manual_pitch_below_half_a_count() {
+    assert_eq!(long_axis_pitch(1, 1, 3), 0);
+    assert_eq!(long_axis_pitch(2, 1, 3), 1);
+}
+
 /// G162.A (M004): the sign rule and the rounding, t(0.5 mm) at 30° = round(288.675) = 289.
 #[test]
 fn infeed_angle_sign_and_rounding() {

@@ -220,3 +220,16 @@ fn g70_steps_and_feeds() {
         vec![(Feed, 40_000, 1_000, 5_000), (Feed, 40_000, -5_000, 5_000), (Rapid, 44_000, 1_000, 0), (Rapid, 50_000, 1_000, 0), (Feed, 44_000, 1_000, 2_000)]
     );
 }
+
+/// G72 with the allowance bringing Q₀ back to A's Z (D = s·(Q₀.z − A.z) = 0) and the smallest
+/// Δd, one Z count (`W0.001`: "a Z length 1 … N", G72.DEPTH): A = X41 Z1, A′ = X41 Z0.5
+/// (s = −1), Δw = 0.5 → Q₀ = X41 Z1 = A. No Z_k lies strictly between A.z and Q₀.z, so there is
+/// no layer and the SEMI pass is pass **1** ("pass header index K + 1 (K layers)", G71.LASTPASS)
+/// with diameter_depth 2·|A.z − Q₀.z| = 0; its move to Q₀ is a move to A (not emitted,
+/// PRJ.NOOP), then Q at F0.2 to X20 Z1 and the rapid back to A.
+#[test]
+fn g72_no_layer_when_q0_is_level_with_a() {
+    let t = run("G00 X41 Z1\nG72 W0.001 R1\nG72 P10 Q20 W0.5 F0.2\nN10 G00 Z0.5\nN20 G01 X20\n");
+    assert_eq!(passes(&t), vec![(1, PassKind::Semi, 0, Rule::G72Lastpass)]);
+    assert_eq!(moves(&t), vec![(Rapid, 41_000, 1_000), (Feed, 20_000, 1_000), (Rapid, 41_000, 1_000)]);
+}
