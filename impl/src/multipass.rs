@@ -123,7 +123,7 @@ pub fn cycle(
         return Err(alarm(AlarmCode::Geometry, b'X', Rule::ComSide));
     }
     // B.x = C.x + s·k; A must not lie between B and C.
-    let bx = cx + 2 * s * i128::from(sec.k);
+    let bx = cx + s * (2 * i128::from(sec.k));
     if s * (i128::from(a.0) - bx) < 0 {
         return Err(alarm(AlarmCode::Geometry, b'X', Rule::ComPoints));
     }
@@ -179,7 +179,7 @@ pub fn cycle(
         a,
         lead: sec.lead,
         starts: first.starts.max(1),
-        leadin: sat(2 * i128::from(s) * i128::from(first.e)),
+        leadin: sat(i128::from(s) * (2 * i128::from(first.e))),
         pull: amounts.map(|am| offsets(am, w, sec.i, s)),
         rule_path: Rule::G76Path,
         rule_pull,
