@@ -333,6 +333,7 @@ mod g162;
 mod g71;
 mod g73;
 mod g74;
+mod g76_edges;
 mod g83;
 mod g90;
 mod lex;

@@ -65,3 +65,18 @@ fn schedule_properties() {
         }
     }
 }
+
+/// G76.DEPTH.MIN (register "Depth schedule": the switch is the first n ≥ 1 with
+/// (√n − √(n−1))·Δd < Δdmin, strictly). Δd = Δdmin = 0.5: pass 1 cuts √1·Δd = Δd, not less, so
+/// it is G76.DEPTH.1; pass 2 (√2 − 1 < 1) switches: 0.5 + 0.5. T = 2: 0.5, 1.0, 1.5, then 2.0 = T.
+#[test]
+fn minimum_equal_to_first_cut_switches_at_pass_two() {
+    assert!(!cuts_minimum(500, 500, 1));
+    assert!(cuts_minimum(500, 500, 2));
+    let r = rough_passes(2_000, 0, 500, 500, DepthMode::Degressive, 100).unwrap();
+    let got: Vec<(i64, Rule)> = r.iter().map(|p| (p.depth, p.rule)).collect();
+    assert_eq!(
+        got,
+        vec![(500, Rule::G76Depth1), (1_000, Rule::G76DepthMin), (1_500, Rule::G76DepthMin), (2_000, Rule::G76DepthLast)]
+    );
+}
