@@ -5,11 +5,11 @@ use crate::expand;
 use crate::tests::util::{alarm_with, passes, run};
 use cycle_vocab::{AlarmCode, Config, Dialect, MoveKind, PassKind, Rule};
 
-/// COM.POINTS (register "Points": B.x = C.x + s·k, A must not lie between B and C:
-/// s·(A.x − B.x) ≥ 0). C.x = 60, k = 1: B.x = 62. A at X62 is B itself: legal. A at X61.999 lies
+/// COM.POINTS (INTERPRETATION.md line 250, "Points": B.x = C.x + s·k, A must not lie between B and
+/// C: s·(A.x − B.x) ≥ 0). C.x = 60, k = 1: B.x = 62. A at X62 is B itself: legal. A at X61.999 lies
 /// between: GEOMETRY on X. And with E = 0 (no lead-in, G76.LEADIN) the pass starts with one rapid
-/// to Bn (G76.INFEED.X), then the thread (G76.PATH): δ 0.5 → X = 60 + 2·(1 − 0.5) = 61,
-/// Z = 5 − round(0.5·tan 30°) = 4.711, W = −25 → thread to Z −20.289.
+/// to Bn (G76.INFEED.X), then the thread (G76.PATH): δ 0.5 → X = 60 + 2·(1 − 0.5) = 61, Z = 5 −
+/// round(0.5·tan 30°) = 4.711, W = −25 → thread to Z −20.289.
 #[test]
 fn g76_start_on_b_is_legal() {
     let t = run("G0 X62 Z5\nG76 P010060 Q0 R0.1\nG76 X60 Z-20 P1 Q0.5 F2\n");
@@ -36,9 +36,9 @@ fn g76_start_on_b_is_legal() {
     );
 }
 
-/// PRJ.MAXPASS (register: (rough passes + m) × L must not exceed `max_passes`). T = 1 − 0.1 = 0.9,
-/// Δd 0.5: rough depths 0.5, 0.707, 0.866, then 1.0 ≥ T → 0.9: 4 rough passes; m = 2: 6 passes.
-/// A bound of 6 runs, 5 is TOO MANY PASSES on Q.
+/// PRJ.MAXPASS (INTERPRETATION.md line 264: (rough passes + m) × L must not exceed `max_passes`). T
+/// = 1 − 0.1 = 0.9, Δd 0.5: rough depths √n·Δd (`001_…` line 29) 0.5, 0.707, 0.866, then 1.0 ≥ T →
+/// 0.9: 4 rough passes; m = 2: 6 passes. A bound of 6 runs, 5 is TOO MANY PASSES on Q.
 #[test]
 fn g76_pass_bound_is_rough_plus_finish() {
     let src = "G0 X62 Z5\nG76 P020060 Q0 R0.1\nG76 X60 Z-20 P1 Q0.5 F2\n";
@@ -56,9 +56,9 @@ fn g76_pass_bound_is_rough_plus_finish() {
     );
 }
 
-/// F76.FORMAT (register "PRJ.DIALECT — FANUC G76 words", line 46): the FANUC second block has
-/// no pull-out words; J and K are refused under the FANUC dialect (WORD NOT ALLOWED), and are the
-/// pull-out under GSK.
+/// F76.FORMAT (register "PRJ.DIALECT — FANUC G76 words", line 46): the FANUC second block has no
+/// pull-out words (`003_…` line 135: G76 X(U) Z(W) Ri Pk QΔd Ff); J and K are refused under the
+/// FANUC dialect (WORD NOT ALLOWED), and are the pull-out under GSK.
 #[test]
 fn f76_second_block_refuses_j_and_k() {
     let fanuc = Config {

@@ -66,9 +66,10 @@ fn schedule_properties() {
     }
 }
 
-/// G76.DEPTH.MIN (register "Depth schedule": the switch is the first n ≥ 1 with
-/// (√n − √(n−1))·Δd < Δdmin, strictly). Δd = Δdmin = 0.5: pass 1 cuts √1·Δd = Δd, not less, so
-/// it is G76.DEPTH.1; pass 2 (√2 − 1 < 1) switches: 0.5 + 0.5. T = 2: 0.5, 1.0, 1.5, then 2.0 = T.
+/// G76.DEPTH.MIN (`001_…` line 29 and the register's "Depth schedule": the switch is the first n ≥
+/// 1 with (√n − √(n−1))·Δd < Δdmin, strictly). Δd = Δdmin = 0.5: pass 1 cuts √1·Δd = Δd, not less,
+/// so it is G76.DEPTH.1; pass 2 (√2 − 1 < 1) switches: 0.5 + 0.5. T = 2: 0.5, 1.0, 1.5, then 2.0 =
+/// T.
 #[test]
 fn minimum_equal_to_first_cut_switches_at_pass_two() {
     assert!(!cuts_minimum(500, 500, 1));
