@@ -48,7 +48,12 @@ pub fn length(n: Number, grid: Grid, increments: bool, at: At) -> Result<i64, Al
 
 /// COM.RANGES: a length with `lo ≤ v ≤ hi`.
 pub fn length_in(n: Number, grid: Grid, increments: bool, lo: i64, hi: i64, at: At) -> Result<i64, Alarm> {
-    let v = length(n, grid, increments, at)?;
+    in_range(length(n, grid, increments, at)?, lo, hi, at)
+}
+
+/// COM.RANGES: `v` when `lo ≤ v ≤ hi`, else `OUT OF RANGE` at the word.
+#[inline(always)]
+fn in_range(v: i64, lo: i64, hi: i64, at: At) -> Result<i64, Alarm> {
     if v < lo || v > hi {
         return Err(at.out_of_range());
     }
@@ -65,10 +70,7 @@ pub fn signed_length(n: Number, grid: Grid, at: At) -> Result<i64, Alarm> {
 #[inline(always)]
 pub fn signed_length_places(n: Number, places: u32, at: At) -> Result<i64, Alarm> {
     let v = n.scaled(places).map_err(|e| scale_error(e, at, Rule::ComRanges))?;
-    if !(-MAX_LENGTH..=MAX_LENGTH).contains(&v) {
-        return Err(at.out_of_range());
-    }
-    Ok(v)
+    in_range(v, -MAX_LENGTH, MAX_LENGTH, at)
 }
 
 /// COM.RANGES: an integer word (P of the first block, L, D) written without a decimal point
