@@ -112,7 +112,7 @@ pub fn cycle(
     lead: i64,
     line: u32,
 ) -> Result<Cycle, Alarm> {
-    let alarm = |code: AlarmCode, word: Option<u8>, rule: Rule| Alarm::new(code, word, rule, line);
+    let alarm = |code: AlarmCode, word: Option<u8>, rule: Rule| refused(code, word, rule, line);
     let d = st.end;
     let r = st.r;
     // G92.FORMAT: W = 0 is a face thread. (Saturating, as the exact difference taken to i64;
@@ -187,6 +187,15 @@ pub fn cycle(
 fn wide_side(ax: i64, dx: i64, r: i64) -> (i64, i64) {
     let cx = i128::from(dx) + 2 * i128::from(r);
     (sat(cx), sat((i128::from(ax) - cx).signum()))
+}
+
+/// [`cycle`]'s alarm, made out of line: the alarm comes back whole (8 bytes in a register), so
+/// that the cycle returned beside it in the same `Result` is not taken apart byte by byte where
+/// the alarm's fields would lie.
+#[cold]
+#[inline(never)]
+fn refused(code: AlarmCode, word: Option<u8>, rule: Rule, line: u32) -> Alarm {
+    Alarm::new(code, word, rule, line)
 }
 
 /// `a − b` saturated, where it leaves i64 ([`cycle`]'s W).

@@ -94,6 +94,11 @@ impl Block {
         self.present
     }
 
+    /// Whether the block has a G word ([`Block::g_codes`] not empty).
+    pub fn has_g(&self) -> bool {
+        self.g_count != 0
+    }
+
     /// The G words, in the order written.
     pub fn g_codes(&self) -> &[Number] {
         self.g.get(..self.g_count as usize).unwrap_or(&[])

@@ -59,7 +59,7 @@ impl Machine {
         st.end = Self::end_point(v, self.pos, st.end);
         // (4) COM.LEAD: the lead.
         let Some(lead) = self.feed else {
-            return Err(Alarm::new(AlarmCode::MissingWord, Some(b'F'), Rule::ComLead, line));
+            return Err(no_lead(line));
         };
         self.speed_limit(line)?;
         let st = &mut self.g92;
@@ -278,4 +278,11 @@ impl Machine {
         let to = Self::end_point(v, self.pos, self.pos);
         arc::arc_move(self.pos, to, cw, words, feed, self.params.arc_tolerance, line).map(Some)
     }
+}
+
+/// COM.LEAD: no lead in force. Out of line, so that the alarm comes back whole (`g92::refused`).
+#[cold]
+#[inline(never)]
+fn no_lead(line: u32) -> Alarm {
+    Alarm::new(AlarmCode::MissingWord, Some(b'F'), Rule::ComLead, line)
 }

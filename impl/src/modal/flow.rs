@@ -27,7 +27,7 @@ impl Machine {
         } else {
             (const { letter_mask(b"MN") }, Rule::SubReturn)
         };
-        let g = if b.g_codes().is_empty() { 0 } else { letter_bit(b'G') };
+        let g = if b.has_g() { letter_bit(b'G') } else { 0 };
         let refused = (b.mask() | g) & !allowed;
         if refused != 0 {
             let l = b'A' + refused.trailing_zeros() as u8; // the first alphabetically

@@ -74,7 +74,7 @@ impl Machine {
     /// general interpreter reads it) for any other block, an arc mode or nc201.
     #[inline(always)]
     pub(crate) fn plain(&self, b: &Block) -> Option<Plain> {
-        if !b.g_codes().is_empty() || b.mask() & !PLAIN != 0 || self.config.dialect == Dialect::Nc201 {
+        if b.has_g() || b.mask() & !PLAIN != 0 || self.config.dialect == Dialect::Nc201 {
             return None;
         }
         let kind = match self.mode {
@@ -94,7 +94,7 @@ impl Machine {
     /// dialect is the configuration's).
     #[inline(always)]
     pub(crate) fn plain_again(b: &Block) -> bool {
-        b.g_codes().is_empty() && b.mask() & !PLAIN == 0
+        !b.has_g() && b.mask() & !PLAIN == 0
     }
 
     /// Steps (2) and (3) of a plain block: X with U, Z with W (COM.ABSINC), then U, W, X, Z.
@@ -150,6 +150,13 @@ impl Machine {
     /// axis words) for the caller to build where it keeps it; inlined for that.
     #[inline(always)]
     pub(crate) fn plain_g92(&mut self, b: &Block, places: u32) -> Result<Option<emit::Cycle>, Alarm> {
+        // A modal run's usual pass: X alone (N aside). No conflict, no other axis; the same steps.
+        if let (Some(n), true) = (b.get(b'X'), b.mask() & !const { letter_mask(b"NX") } == 0) {
+            self.smax_due = false;
+            let x = signed_length_places(n, places, At { letter: b'X', line: b.line })?;
+            let v = Vals { x: Some(x), ..Vals::default() };
+            return self.g92_cycle(false, &v, true, b.line);
+        }
         let a = self.axes(b, places)?;
         let axis = a.any();
         let v = Vals { u: a.u, w: a.w, x: a.x, z: a.z, ..Vals::default() };

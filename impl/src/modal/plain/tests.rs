@@ -139,6 +139,40 @@ fn plain_blocks_give_moves_and_alarms() {
     assert_eq!(starts.iter().filter(|e| second(e)).count(), 3 * 2, "{starts:?}");
 }
 
+/// G92 passes of X alone (a modal run's usual block, read by its own short path in
+/// `Machine::plain_g92`), with N too: the same stream as the general path, and the alarms of
+/// the X word and of the cycle's checks on the block's line.
+#[test]
+fn g92_passes_of_x_alone() {
+    let alarm = |code: AlarmCode, word: u8, rule: Rule, line: u32| Some(Alarm::new(code, Some(word), rule, line));
+    let cases: &[(&str, usize, Option<Alarm>)] = &[
+        // Two passes (a header and five moves each), then X out of range (COM.RANGES).
+        (
+            "G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\nN6 X58\nX57.5\nX1000000\n",
+            1 + 3 * 6,
+            alarm(AlarmCode::OutOfRange, b'X', Rule::ComRanges, 5),
+        ),
+        // X finer than the grid (COM.UNITS).
+        ("G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\nX58.0001\n", 1 + 6, alarm(AlarmCode::Precision, b'X', Rule::ComUnits, 3)),
+        // X on A.x, R = 0: C.x = A.x (COM.SIDE). No pull-out: four moves a pass.
+        ("G0 X65 Z5\nG92 X58.7 Z-28 F3\nX58\nX65\n", 1 + 2 * 6, alarm(AlarmCode::Geometry, b'X', Rule::ComSide, 4)),
+        // X above A.x (s = −1): the pull-out of J3 ends past A.x (G92.PATH, on J).
+        ("G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\nX70\n", 1 + 6, alarm(AlarmCode::Geometry, b'J', Rule::G92Path, 3)),
+        // With J1: a pass on each side of A.x; X63's pull-out ends on A.x (63 + 2·1), so its
+        // rapid back in X is no move (PRJ.NOOP).
+        ("G0 X65 Z5\nG92 X58.7 Z-28 F3 J1 K1\nX68\nX63\n", 1 + 3 * 6 - 1, None),
+        // A taper's R kept from the G92 block.
+        ("G0 X65 Z5\nG92 X58.7 Z-28 R-1 F3 J3 K1\nX58\nX57\n", 1 + 3 * 6, None),
+    ];
+    for (src, events, expected) in cases {
+        for c in [Config::default(), fanuc(), inch()] {
+            same(src, c);
+        }
+        let (got, a) = same(src, Config::default());
+        assert_eq!((got.len(), a), (*events, *expected), "{src}\n{got:?}");
+    }
+}
+
 /// Which blocks take the plain path: none with a G code or another word, none under an arc
 /// mode or nc201; the others read as their mode's move or cycle.
 #[test]
