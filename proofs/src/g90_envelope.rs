@@ -163,7 +163,7 @@ cycle_harness::property! {
         body: |src, scope| body(src, &scope),
         /// Kani: one G90/G94 cycle over the ranges of [`KANI`]. Unwind 7: the harness reads at most
         /// six events; `next_event` skips at most four moves.
-        kani: proof(KANI) { unwind: 7, measured: "SUCCESSFUL (446 checks, 1 unreachable; 7/7 covers), 76.8 s, 1.24 GB" },
+        kani: proof(KANI) { unwind: 7, measured: "SUCCESSFUL (465 checks, 1 unreachable; 7/7 covers), 200.4 s, 1.28 GB" },
         tests {
             /// Coordinates in ±3, tapers in ±3: every combination (both codes), so every
             /// coincidence of A, C and D (the left-out moves) and every taper sign.

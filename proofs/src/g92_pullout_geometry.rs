@@ -147,7 +147,7 @@ cycle_harness::property! {
         /// Kani: the pull-out parts over the legal ranges. Kissat: with CaDiCaL (Kani's default) the
         /// last query reached no verdict in 5–15 min (README). Unwind 5 as measured; no loop is left
         /// (part 2's bracket is decided in `u128`, [`is_div_round_u64`]), so it bounds nothing.
-        kani: proof(KANI) { unwind: 5, solver: kissat, measured: "SUCCESSFUL (300 checks, 2 unreachable; 5/5 covers), 630.2 s, 0.33 GB" },
+        kani: proof(KANI) { unwind: 5, solver: kissat, measured: "SUCCESSFUL (300 checks, 2 unreachable; 5/5 covers), 360.2 s, 0.32 GB" },
         tests {
             /// Words ≤ 6, W and R in ±12, leads ≤ 40: every combination.
             fn g92_pullout_geometry_exhaustive_small = exhaustive(32, 2_000_000) on Scope { max_len: 6, max_lead: 40 };

@@ -105,7 +105,7 @@ cycle_harness::property! {
         states: "The feed-hold retract of a thread cut (No.0018 bit 6 = 0) over ±2^40, from any point of the held move: a move in the pull-out manner exactly when the cut has a pull-out, by the programmed pull-out's displacement (or on to its end from the pull-out), the way the pull-out goes on the short axis, never past the thread's end on the long axis; then a rapid on the short axis only to A's coordinate, then A.",
         body: |src, scope| body(src, &scope),
         /// Kani: the retract over the ranges of [`KANI`]; no loop.
-        kani: proof(KANI) { measured: "SUCCESSFUL (129 checks; 5/5 covers), 14.5 s, 0.27 GB" },
+        kani: proof(KANI) { measured: "SUCCESSFUL (129 checks; 5/5 covers), 25.9 s, 0.14 GB" },
         tests {
             /// Coordinates in ±1: every combination of points, pull-outs, axes and held moves.
             fn hold_retract_exhaustive_small = exhaustive(3, 3_000_000) on Scope { max_pos: 1 };
