@@ -235,3 +235,21 @@ fn full_circle_sweep_contains_all_but_its_start_ray() {
         assert!(!sweep_contains(&a, &b, cw, &v(3, 0)));
     }
 }
+
+/// `sweep_contains` past half a turn: counter-clockwise from a = (9 000, −2 000) to b = (9 000,
+/// 2 000) (half units, u up, v right) leaves out only the closed remainder from b back to a, which
+/// holds +u. (Through `turns`, its one caller, a sweep this long always has one of each pair of
+/// opposite directions inside, so the pairs alone cannot show which ones.)
+#[test]
+fn long_sweep_leaves_out_only_its_remainder() {
+    let v = |u: i32, w: i32| (BigInt::from(u), BigInt::from(w));
+    let (a, b) = (v(9_000, -2_000), v(9_000, 2_000));
+    for q in [v(0, 1), v(0, -1), v(-1, 0)] {
+        assert!(sweep_contains(&a, &b, false, &q), "{q:?}");
+        assert!(!sweep_contains(&a, &b, true, &q), "{q:?} clockwise");
+    }
+    assert!(!sweep_contains(&a, &b, false, &v(1, 0)));
+    assert!(sweep_contains(&a, &b, true, &v(1, 0)));
+    // The ends' own rays are never strictly inside.
+    assert!(!sweep_contains(&a, &b, false, &a) && !sweep_contains(&a, &b, false, &b));
+}
