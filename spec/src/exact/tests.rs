@@ -77,3 +77,13 @@ fn round_sqrt_exact() {
         assert_eq!(round_sqrt(n), f, "{n}");
     }
 }
+
+/// `isqrt_big` is ⌊√n⌋ exactly ("Rounding": square roots by integer square root), also beyond
+/// u128: at a square, one below it, and between.
+#[test]
+fn isqrt_big_is_the_floor_of_the_root() {
+    let ten = |k: usize| num_traits::pow(BigUint::from(10u32), k);
+    for (n, r) in [(ten(0) * 0u32, ten(0) * 0u32), (ten(1), ten(0) * 3u32), (ten(40), ten(20)), (ten(40) - 1u32, ten(20) - 1u32), (ten(41), "316227766016837933199".parse().unwrap())] {
+        assert_eq!(isqrt_big(&n), r, "{n}");
+    }
+}
