@@ -87,3 +87,12 @@ fn isqrt_big_is_the_floor_of_the_root() {
         assert_eq!(isqrt_big(&n), r, "{n}");
     }
 }
+
+/// `round_root` with σ = 0 is round(n / d), whatever m: (7 + 0·√5)/2 = 3.5 → 4, (−7 + 0·√9)/2 →
+/// −4, 6/4 = 1.5 → 2.
+#[test]
+fn round_root_without_the_root() {
+    assert_eq!(round_root(&big(7), 0, &BigUint::from(5u32), &big(2)), big(4));
+    assert_eq!(round_root(&big(-7), 0, &BigUint::from(9u32), &big(2)), big(-4));
+    assert_eq!(round_root(&big(6), 0, &BigUint::from(0u32), &big(4)), big(2));
+}
