@@ -341,6 +341,7 @@ mod m003_words;
 mod operator;
 mod operator_cycles;
 mod props;
+mod shared;
 mod spindle;
 mod sub;
 mod threads_a;

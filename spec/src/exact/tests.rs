@@ -77,3 +77,24 @@ fn round_sqrt_exact() {
         assert_eq!(round_sqrt(n), f, "{n}");
     }
 }
+
+/// `isqrt_big` is ⌊√n⌋ exactly ("Rounding": square roots by integer square root), also beyond
+/// u128: at a square, one below it, and between.
+#[test]
+fn isqrt_big_is_the_floor_of_the_root() {
+    let ten = |k: usize| num_traits::pow(BigUint::from(10u32), k);
+    let small = |v: u32| BigUint::from(v);
+    let cases = [(small(0), small(0)), (ten(1), small(3)), (ten(40), ten(20)), (ten(40) - 1u32, ten(20) - 1u32), (ten(41), "316227766016837933199".parse().unwrap())];
+    for (n, r) in cases {
+        assert_eq!(isqrt_big(&n), r, "{n}");
+    }
+}
+
+/// `round_root` with σ = 0 is round(n / d), whatever m: (7 + 0·√5)/2 = 3.5 → 4, (−7 + 0·√9)/2 →
+/// −4, 6/4 = 1.5 → 2.
+#[test]
+fn round_root_without_the_root() {
+    assert_eq!(round_root(&big(7), 0, &BigUint::from(5u32), &big(2)), big(4));
+    assert_eq!(round_root(&big(-7), 0, &BigUint::from(9u32), &big(2)), big(-4));
+    assert_eq!(round_root(&big(6), 0, &BigUint::from(0u32), &big(4)), big(2));
+}

@@ -3,7 +3,7 @@
 //! and their order.
 
 use crate::tests::util::{alarm_with as alarm_of};
-use crate::arc::{centre_r, turns, Point};
+use crate::arc::{centre_r, sweep_contains, turns, Point};
 use crate::expand;
 use cycle_vocab::text::Trace;
 use cycle_vocab::{AlarmCode, Config, Event, Move, MoveKind, Params, Rule};
@@ -207,4 +207,49 @@ fn arc_event_in_the_trace() {
     let t = run("G0 X17 Z-40.5\nG02 X29 W-7.348 R7.5 F100\n");
     assert!(t.to_gcode().contains("G02 X29.000 Z-47.848 I32.000 K-40.500 F100.0000"), "{}", t.to_gcode());
     assert_eq!(t.events.iter().filter(|e| matches!(e, Event::Move(_))).count(), 2);
+}
+
+/// ARC.TOL: only an end on the ray from the centre through S closes the circle; an end on the
+/// opposite ray is a half circle, legal within the tolerance. From X10 Z0 about X5 Z0 (I−2.5),
+/// the end X0.01 Z0 lies 2.495 from the centre and S 2.5: 0.005 ≤ 0.01. Along Z, from X10 Z0
+/// about Z−5 (K−5), the end Z−9.995 lies 4.995 from it and S 5.
+#[test]
+fn half_circle_to_the_opposite_ray_within_the_tolerance() {
+    let m = last("G0 X10 Z0\nG2 X0.01 I-2.5 F0.1\n");
+    assert_eq!((m.kind, m.x, m.z, m.cx, m.cz, m.rule), (MoveKind::ArcCw, 10, 0, 5_000, 0, Rule::ArcIk));
+    let m = last("G0 X10 Z0\nG3 Z-9.995 K-5 F0.1\n");
+    assert_eq!((m.kind, m.x, m.z, m.cx, m.cz, m.rule), (MoveKind::ArcCcw, 10_000, -9_995, 10_000, -5_000, Rule::ArcIk));
+}
+
+/// `sweep_contains`, as its doc comment states: a sweep whose end lies on its start's ray is the
+/// full circle — every direction but that ray lies strictly inside. No program gets here (ARC.TOL
+/// refuses such an arc before its sweep is asked for), so it is checked directly.
+#[test]
+fn full_circle_sweep_contains_all_but_its_start_ray() {
+    let v = |u: i32, w: i32| (BigInt::from(u), BigInt::from(w));
+    let (a, b) = (v(1, 0), v(2, 0));
+    for cw in [false, true] {
+        for q in [v(0, 1), v(-1, 0), v(0, -1), v(1, 1)] {
+            assert!(sweep_contains(&a, &b, cw, &q), "{q:?} cw {cw}");
+        }
+        assert!(!sweep_contains(&a, &b, cw, &v(3, 0)));
+    }
+}
+
+/// `sweep_contains` past half a turn: counter-clockwise from a = (9 000, −2 000) to b = (9 000,
+/// 2 000) (half units, u up, v right) leaves out only the closed remainder from b back to a, which
+/// holds +u. (Through `turns`, its one caller, a sweep this long always has one of each pair of
+/// opposite directions inside, so the pairs alone cannot show which ones.)
+#[test]
+fn long_sweep_leaves_out_only_its_remainder() {
+    let v = |u: i32, w: i32| (BigInt::from(u), BigInt::from(w));
+    let (a, b) = (v(9_000, -2_000), v(9_000, 2_000));
+    for q in [v(0, 1), v(0, -1), v(-1, 0)] {
+        assert!(sweep_contains(&a, &b, false, &q), "{q:?}");
+        assert!(!sweep_contains(&a, &b, true, &q), "{q:?} clockwise");
+    }
+    assert!(!sweep_contains(&a, &b, false, &v(1, 0)));
+    assert!(sweep_contains(&a, &b, true, &v(1, 0)));
+    // The ends' own rays are never strictly inside.
+    assert!(!sweep_contains(&a, &b, false, &a) && !sweep_contains(&a, &b, false, &b));
 }
