@@ -9,7 +9,8 @@
 //!   and G76.DEPTH.1's square roots taken (`schedule`'s `root`, where its walk from the guess
 //!   does not find the root);
 //! - the plain-block loops entered (`stream::runs`) and the blocks read (`Core::lex`): that a
-//!   run of plain blocks is read in one loop, and no block before the buffer has room.
+//!   run of plain blocks is read in one loop, and no block before the buffer has room;
+//! - the G92 passes of X alone read by their short path (`Machine::plain_g92`).
 extern crate std;
 use core::cell::Cell;
 
@@ -36,3 +37,4 @@ counter!(SEARCHES, count_search, searches, "G76.DEPTH.MIN switch-pass searches")
 counter!(ROOTS, count_root, roots, "G76.DEPTH.1 square roots taken");
 counter!(RUNS, count_run, runs, "plain-block loops entered");
 counter!(READS, count_read, reads, "blocks read");
+counter!(SHORT, count_short, shorts, "G92 passes of X alone read by their short path");

@@ -152,6 +152,8 @@ impl Machine {
     pub(crate) fn plain_g92(&mut self, b: &Block, places: u32) -> Result<Option<emit::Cycle>, Alarm> {
         // A modal run's usual pass: X alone (N aside). No conflict, no other axis; the same steps.
         if let (Some(n), true) = (b.get(b'X'), b.mask() & !const { letter_mask(b"NX") } == 0) {
+            #[cfg(test)]
+            crate::probe::count_short();
             self.smax_due = false;
             let x = signed_length_places(n, places, At { letter: b'X', line: b.line })?;
             let v = Vals { x: Some(x), ..Vals::default() };

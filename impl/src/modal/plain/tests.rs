@@ -94,6 +94,10 @@ const PROGRAMS: &[&str] = &[
     // A plain block after G01 under G96 (a feed: allowed), then the rapid that is not.
     "G0 X30 Z5\nG50 S2000\nG96 S100\nG1 Z4 F0.2\nZ3\nG0 X40\nZ5\n",
     "G0 X30 Z5\nG50 S2000\nG96 S100 G1 Z4 F0.2\nG0\nZ3\n",
+    // A block of N alone in a G90, a G92 and a G32 run: no axis word, so no pass and no move.
+    "G0 X100 Z2\nG90 X95 Z-20 F0.2\nN5\nX90\n",
+    "G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\nN6\nX58\n",
+    "G0 X30 Z5\nG32 Z4 F2\nN7\nZ3\n",
 ];
 
 #[test]
@@ -171,6 +175,16 @@ fn g92_passes_of_x_alone() {
         let (got, a) = same(src, Config::default());
         assert_eq!((got.len(), a), (*events, *expected), "{src}\n{got:?}");
     }
+    // The short path is the one `fill`'s G92 loop takes: by each pass of X alone (N aside), by
+    // no other block.
+    let shorts = |src: &str| {
+        let before = crate::probe::shorts();
+        filled(src, Config::default(), 64);
+        crate::probe::shorts() - before
+    };
+    let run = "G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\nN6 X58\nX57.5\nZ-27\nX57 Z-28\nN9\nX56.5\n";
+    assert_eq!(shorts(run), 3, "N6 X58, X57.5, X56.5");
+    assert_eq!(shorts(&general(run)), 0);
 }
 
 /// Which blocks take the plain path: none with a G code or another word, none under an arc
