@@ -98,6 +98,8 @@ const PROGRAMS: &[&str] = &[
     "G0 X100 Z2\nG90 X95 Z-20 F0.2\nN5\nX90\n",
     "G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\nN6\nX58\n",
     "G0 X30 Z5\nG32 Z4 F2\nN7\nZ3\n",
+    // G92 passes moved by W, then by Z with X, then by U, with no alarm on the way.
+    "G0 X65 Z5\nG92 X58.7 Z-28 F3 J3 K1\nX58\nW-20\nX57.5 Z-25\nU-1\n",
 ];
 
 #[test]
