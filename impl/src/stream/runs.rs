@@ -101,7 +101,6 @@ impl Core<'_> {
             next_plain!(self, out, n);
         }
     }
-
 }
 
 #[cfg(test)]
